@@ -1,0 +1,1 @@
+"""Training and evaluating the span recogniser on the paper's brat annotations."""

@@ -1,0 +1,5 @@
+"""Stage 1 of Algorithm 1: split a recipe into instruction steps."""
+
+from cook2ltl.preprocess.sentences import split_sentences
+
+__all__ = ["split_sentences"]
