@@ -30,6 +30,15 @@ ABILITIES = (
 )
 
 
+class Refused(Exception):
+    """A rule refused an action; `code` is THOR's errorCode when the arguments were at fault."""
+
+    def __init__(self, message: str, code: str = "") -> None:
+        super().__init__(message)
+        self.message = message
+        self.code = code
+
+
 @dataclass(frozen=True)
 class SliceRule:
     into: str

@@ -1,0 +1,295 @@
+"""Start an unmodified `ai2thor.controller.Controller` on the embedded kitchen or
+on a real AI2-THOR build, under a hard start-up timeout.
+
+The Controller blocks forever if its player dies before opening the FIFO pipes
+(it waits in `open()` on the server pipe). So it is built with
+`download_only=True`, which launches nothing, and then started in a worker
+thread that this module watches: if the player exits or stays silent past the
+timeout, the player is killed, the pipes are poked so the blocked thread wakes
+up and fails, and `KitchenUnavailable("THOR unavailable: <reason>")` is raised.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import re
+import shlex
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from . import scenes
+
+THOR_EXECUTABLE_ENV = "COOK2LTL_THOR_EXECUTABLE"  # path to a THOR player binary
+THOR_PLATFORM_ENV = "COOK2LTL_THOR_PLATFORM"  # Linux64 or CloudRendering, for that binary
+PLATFORMS = ("Linux64", "CloudRendering")
+_RELEASE = re.compile(r"^thor-(Linux64|CloudRendering)-([0-9a-f]{40})$")
+_POISON = bytes([2, 0, 0, 0, 0])  # an ACTION header: a field the Controller never accepts, so it fails at once
+
+
+class KitchenUnavailable(RuntimeError):
+    """No kitchen could be started; the message says why, starting "THOR unavailable:"."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(f"THOR unavailable: {reason}")
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class ThorBuild:
+    """A real AI2-THOR player: an explicit binary, or a release staged in ~/.ai2thor/releases."""
+
+    platform: str
+    executable: Path | None = None  # set for an explicit binary
+    commit_id: str | None = None  # set for a staged release
+
+
+def start_kitchen(scene: str = "FloorPlan1", backend: str = "auto", **options: Any):
+    """A started Controller. backend: "embedded", "thor", or "auto" (a real THOR
+    build if one is configured or staged, else the embedded kitchen)."""
+    if backend == "embedded":
+        return start_embedded(scene, **options)
+    if backend == "thor":
+        return start_thor(scene, **options)
+    if backend != "auto":
+        raise ValueError(f"backend must be 'embedded', 'thor' or 'auto', not {backend!r}")
+    try:
+        build = find_thor_build()
+    except KitchenUnavailable:
+        return start_embedded(scene, **options)
+    return start_thor(scene, build=build, **options)
+
+
+def start_embedded(
+    scene: str = "FloorPlan1",
+    *,
+    width: int = 300,
+    height: int = 300,
+    start_timeout: float = 30.0,
+    step_timeout: float = 10.0,
+    slice_needs_knife: bool = True,
+    **init_params: Any,
+):
+    """A Controller driving the embedded kitchen (no Unity, no display needed)."""
+    scenes.canonical_scene(scene)  # fail fast on a name the kitchen does not have
+    Controller = _controller_class()
+    controller = Controller(
+        local_executable_path=str(embedded_executable()),
+        download_only=True,
+        width=width,
+        height=height,
+        # The Controller needs some display for a local executable; the kitchen ignores it.
+        x_display=os.environ.get("DISPLAY") or ":0",
+        server_timeout=step_timeout,
+        server_start_timeout=start_timeout,
+    )
+    init_params["sliceNeedsKnife"] = slice_needs_knife
+    return _start_guarded(controller, scene, init_params, start_timeout, "the embedded kitchen")
+
+
+def start_thor(
+    scene: str = "FloorPlan1",
+    *,
+    build: ThorBuild | None = None,
+    width: int = 300,
+    height: int = 300,
+    start_timeout: float = 120.0,
+    step_timeout: float = 100.0,
+    **init_params: Any,
+):
+    """A Controller driving a real AI2-THOR build; KitchenUnavailable if there is none that runs."""
+    build = build or find_thor_build()
+    Controller = _controller_class()
+    display = os.environ.get("DISPLAY")
+    if build.platform == "Linux64" and not display:
+        raise KitchenUnavailable("the Linux64 build needs an X display (DISPLAY is unset); use a CloudRendering build")
+    common = dict(
+        download_only=True,
+        width=width,
+        height=height,
+        x_display=display or ":0",  # CloudRendering ignores it; the Controller needs a value
+        server_timeout=step_timeout,
+        server_start_timeout=start_timeout,
+    )
+    try:
+        if build.executable is not None:
+            controller = Controller(local_executable_path=str(build.executable), **common)
+        else:
+            import ai2thor.platform
+
+            platform = getattr(ai2thor.platform, build.platform)
+            controller = Controller(platform=platform, commit_id=build.commit_id, **common)
+    except Exception as err:  # the Controller reports missing Vulkan, X, metadata as plain Exceptions
+        raise KitchenUnavailable(_first_lines(err)) from err
+    return _start_guarded(controller, scene, init_params, start_timeout, f"the {build.platform} THOR build")
+
+
+def find_thor_build(executable: str | os.PathLike | None = None) -> ThorBuild:
+    """The THOR build to use: `executable`, else $COOK2LTL_THOR_EXECUTABLE, else a
+    release staged in ~/.ai2thor/releases (the folder the Controller reads)."""
+    chosen = executable or os.environ.get(THOR_EXECUTABLE_ENV)
+    if chosen:
+        path = Path(chosen).expanduser()
+        if not (path.is_file() and os.access(path, os.X_OK)):
+            raise KitchenUnavailable(f"{path} is not an executable file (from {THOR_EXECUTABLE_ENV} or settings)")
+        platform = os.environ.get(THOR_PLATFORM_ENV) or ("CloudRendering" if "CloudRendering" in path.name else "Linux64")
+        if platform not in PLATFORMS:
+            raise KitchenUnavailable(f"{THOR_PLATFORM_ENV}={platform!r}; use one of {', '.join(PLATFORMS)}")
+        return ThorBuild(platform=platform, executable=path)
+    return _staged_release(Path.home() / ".ai2thor" / "releases")
+
+
+def _staged_release(releases: Path) -> ThorBuild:
+    found = []
+    for folder in releases.iterdir() if releases.is_dir() else ():
+        match = _RELEASE.match(folder.name)
+        binary = folder / folder.name
+        # Without metadata.json the Controller would try to download it.
+        if match and binary.is_file() and (folder / "metadata.json").is_file():
+            found.append((folder, match.group(1), match.group(2)))
+    if not found:
+        raise KitchenUnavailable(
+            f"no AI2-THOR build installed: set {THOR_EXECUTABLE_ENV} to a THOR player binary, "
+            f"or stage a release (thor-<Linux64|CloudRendering>-<commit>/ with metadata.json) in {releases}"
+        )
+    wanted = _controller_commit()
+    preferred = "Linux64" if os.environ.get("DISPLAY") else "CloudRendering"
+    folder, platform, commit = max(
+        found, key=lambda f: (f[2] == wanted, f[1] == preferred, f[0].stat().st_mtime)
+    )
+    return ThorBuild(platform=platform, commit_id=commit)
+
+
+def embedded_executable() -> Path:
+    """The script the Controller runs as its 'Unity build' (written once, reused).
+
+    The Controller splits the command line with shlex, so the path must not
+    contain whitespace; the script re-runs this very interpreter on the player.
+    """
+    app_dir = Path(__file__).resolve().parents[2]
+    script = (
+        "#!/bin/sh\n"
+        "# Written by cook2ltl.kitchen.launcher: runs the embedded THOR-compatible kitchen.\n"
+        f"PYTHONPATH={shlex.quote(str(app_dir))}${{PYTHONPATH:+:$PYTHONPATH}} "
+        f"exec {shlex.quote(sys.executable)} -m cook2ltl.kitchen.player \"$@\"\n"
+    )
+    folder = _cache_dir()
+    path = folder / f"kitchen-player-{hashlib.sha256(script.encode()).hexdigest()[:12]}"
+    if not path.is_file():
+        folder.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=".kitchen-player-")
+        with os.fdopen(fd, "w") as f:
+            f.write(script)
+        os.chmod(tmp, 0o755)
+        os.replace(tmp, path)  # atomic: concurrent launches never see half a script
+    return path
+
+
+def _cache_dir() -> Path:
+    from platformdirs import user_cache_dir
+
+    folder = Path(os.environ.get("COOK2LTL_KITCHEN_CACHE") or user_cache_dir("cook2ltl")) / "kitchen"
+    if any(c.isspace() for c in str(folder)):
+        folder = Path(tempfile.gettempdir()) / f"cook2ltl-kitchen-{os.getuid()}"
+    return folder
+
+
+def _start_guarded(controller, scene: str, init_params: dict[str, Any], timeout: float, what: str):
+    outcome: dict[str, BaseException] = {}
+
+    def start() -> None:
+        try:
+            controller.start(width=controller.width, height=controller.height, x_display=controller.x_display)
+            # What Controller.__init__ does after start() when download_only is False.
+            controller.initialization_parameters = dict(init_params)
+            event = controller.reset(scene)
+            if event.metadata["actionReturn"]:
+                controller.server.set_init_params(event.metadata["actionReturn"])
+        except BaseException as err:  # handed to the waiting thread
+            outcome["error"] = err
+
+    worker = threading.Thread(target=start, name="thor-start", daemon=True)
+    worker.start()
+    deadline = time.monotonic() + timeout
+    reason = None
+    while worker.is_alive() and reason is None:
+        worker.join(0.05)
+        proc = controller.server.unity_proc if controller.server else None
+        if worker.is_alive() and proc is not None and proc.poll() is not None:
+            reason = f"{what} exited with code {proc.returncode} before answering (see {_log_path(controller)})"
+        elif worker.is_alive() and time.monotonic() > deadline:
+            reason = f"{what} did not answer within {timeout:g}s (see {_log_path(controller)})"
+    if reason is not None:
+        _abandon(controller, worker)
+        raise KitchenUnavailable(reason)
+    if "error" in outcome:
+        _stop_quietly(controller)
+        raise KitchenUnavailable(f"{what} failed to start: {_first_lines(outcome['error'])}") from outcome["error"]
+    return controller
+
+
+def _abandon(controller, worker: threading.Thread) -> None:
+    """Kill the player and wake the worker thread wherever it blocks on a pipe."""
+    server = controller.server
+    proc = server.unity_proc if server else None
+    if proc is not None and proc.poll() is None:
+        proc.kill()
+        proc.wait(5)
+    give_up = time.monotonic() + 5
+    while server is not None and worker.is_alive() and time.monotonic() < give_up:
+        _poke(server.server_pipe_path, os.O_WRONLY, _POISON)
+        _poke(server.client_pipe_path, os.O_RDONLY, b"")
+        worker.join(0.05)
+    _stop_quietly(controller)
+
+
+def _poke(pipe: str, mode: int, payload: bytes) -> None:
+    # Opening the other end releases a blocked open(); the poison ends a blocked read.
+    try:
+        fd = os.open(pipe, mode | os.O_NONBLOCK)
+    except OSError:
+        return  # nobody is waiting on this pipe (yet)
+    try:
+        if payload:
+            os.write(fd, payload)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def _stop_quietly(controller) -> None:
+    try:
+        controller.stop()
+    except Exception:
+        pass  # the pipes may already be broken; the player is dead either way
+
+
+def _log_path(controller) -> str:
+    return os.path.join(controller.log_dir, "unity.log")
+
+
+def _first_lines(err: BaseException, limit: int = 3) -> str:
+    lines = [line.strip() for line in str(err).strip().splitlines() if line.strip()]
+    return " ".join(lines[:limit]) or type(err).__name__
+
+
+def _controller_class():
+    try:
+        from ai2thor.controller import Controller
+    except ImportError as err:
+        raise KitchenUnavailable(f"the ai2thor package is not installed ({err}); pip install ai2thor") from err
+    return Controller
+
+
+def _controller_commit() -> str | None:
+    try:
+        from ai2thor.build import COMMIT_ID
+    except ImportError:
+        return None
+    return COMMIT_ID
