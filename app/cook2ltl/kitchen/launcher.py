@@ -86,7 +86,7 @@ def start_embedded(
         # The Controller needs some display for a local executable; the kitchen ignores it.
         x_display=os.environ.get("DISPLAY") or ":0",
         server_timeout=step_timeout,
-        server_start_timeout=start_timeout,
+        server_start_timeout=_inner_timeout(start_timeout),
     )
     init_params["sliceNeedsKnife"] = slice_needs_knife
     return _start_guarded(controller, scene, init_params, start_timeout, "the embedded kitchen")
@@ -114,7 +114,7 @@ def start_thor(
         height=height,
         x_display=display or ":0",  # CloudRendering ignores it; the Controller needs a value
         server_timeout=step_timeout,
-        server_start_timeout=start_timeout,
+        server_start_timeout=_inner_timeout(start_timeout),
     )
     try:
         if build.executable is not None:
@@ -268,6 +268,11 @@ def _stop_quietly(controller) -> None:
         controller.stop()
     except Exception:
         pass  # the pipes may already be broken; the player is dead either way
+
+
+def _inner_timeout(start_timeout: float) -> float:
+    # The Controller's own read timeout only backs up the guard, which fires first and says why.
+    return start_timeout + 10.0
 
 
 def _log_path(controller) -> str:
