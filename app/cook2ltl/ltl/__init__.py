@@ -1,0 +1,37 @@
+"""LTLf engine: parse, print, simplify, progress and monitor formulas, build DFAs.
+
+The core is plain functions over immutable, hash-consed formulas; only the
+parser needs a library (lark). Semantics are stated in :mod:`.progress`.
+"""
+
+from cook2ltl.ltl.ast import (
+    FALSE,
+    TRUE,
+    Always,
+    And,
+    Atom,
+    Equiv,
+    Eventually,
+    Formula,
+    Implies,
+    Next,
+    Not,
+    Or,
+    Release,
+    StrongRelease,
+    Until,
+    WeakNext,
+    WeakUntil,
+    holds_at_end,
+)
+from cook2ltl.ltl.parser import LTLSyntaxError, parse
+from cook2ltl.ltl.printer import to_spot, to_unicode
+from cook2ltl.ltl.progress import StepResult, Verdict, holds, monitor, progress, verdict
+from cook2ltl.ltl.simplify import simplify
+
+__all__ = [
+    "FALSE", "TRUE", "Always", "And", "Atom", "Equiv", "Eventually", "Formula", "Implies",
+    "LTLSyntaxError", "Next", "Not", "Or", "Release", "StepResult", "StrongRelease", "Until",
+    "Verdict", "WeakNext", "WeakUntil", "holds", "holds_at_end", "monitor", "parse", "progress",
+    "simplify", "to_spot", "to_unicode", "verdict",
+]  # fmt: skip

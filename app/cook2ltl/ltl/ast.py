@@ -1,0 +1,321 @@
+"""Immutable, hash-consed LTLf formulas in a canonical form.
+
+Every node is interned: building the same formula twice returns the same
+object, so equality is identity and hashing is cheap. That is what makes the
+memo tables of progression and the DFA construction fast.
+
+Canonical form, applied by the constructors themselves:
+
+* ``And``/``Or`` are n-ary, flattened, deduplicated and sorted; ``TRUE`` and
+  ``FALSE`` are folded away, and a single operand is returned as is.
+* ``Not(Not(f))`` is ``f``; ``Not`` of a constant is the other constant.
+
+Next operators: ``Next`` is the *strong* next (Spot ``X[!]``: a next step must
+exist) and ``WeakNext`` the *weak* one (Spot ``X`` under Spot's LTLf reading:
+true at the last step). The other operators are as in Spot: ``M`` is the
+strong release, ``W`` the weak until.
+"""
+
+from __future__ import annotations
+
+import weakref
+from functools import lru_cache
+from dataclasses import dataclass, fields
+from typing import ClassVar
+
+_INTERNED: weakref.WeakValueDictionary = weakref.WeakValueDictionary()
+_FORBIDDEN_IN_NAMES = frozenset('()",')
+
+
+class Formula:
+    """Base class of all formula nodes (never instantiated itself)."""
+
+    __slots__ = ()
+    rank: ClassVar[int]
+    # Set by ``_intern``: a structural sort key, the atoms and the node count.
+    key: tuple
+    atoms: frozenset
+    size: int
+
+    def __str__(self) -> str:
+        from cook2ltl.ltl.printer import to_unicode
+
+        return to_unicode(self)
+
+    def __repr__(self) -> str:
+        from cook2ltl.ltl.printer import to_spot
+
+        return f"<{type(self).__name__} {to_spot(self)}>"
+
+    def __reduce__(self):
+        # Pickling must go back through the constructor to stay interned.
+        return (_rebuild, (type(self), self.constructor_args()))
+
+    def constructor_args(self) -> tuple:
+        raise NotImplementedError
+
+    @property
+    def children(self) -> tuple[Formula, ...]:
+        return tuple(c for c in self.constructor_args() if isinstance(c, Formula))
+
+
+def _rebuild(cls, args):
+    if cls is And or cls is Or:
+        return cls(*args[0])
+    return cls(*args)
+
+
+def _intern(cls, values: tuple, key_tail: tuple, children: tuple) -> Formula:
+    lookup = (cls, values)
+    node = _INTERNED.get(lookup)
+    if node is not None:
+        return node
+    node = object.__new__(cls)
+    for field, value in zip(fields(cls), values):
+        object.__setattr__(node, field.name, value)
+    object.__setattr__(node, "key", (cls.rank, *key_tail))
+    atoms = frozenset().union(*(c.atoms for c in children)) if children else frozenset()
+    object.__setattr__(node, "atoms", atoms)
+    object.__setattr__(node, "size", 1 + sum(c.size for c in children))
+    _INTERNED[lookup] = node
+    return node
+
+
+@dataclass(frozen=True, eq=False, init=False, repr=False)
+class Constant(Formula):
+    value: bool
+    rank: ClassVar[int] = 0
+
+    def __new__(cls, value: bool):
+        return _intern(cls, (bool(value),), (bool(value),), ())
+
+    def constructor_args(self) -> tuple:
+        return (self.value,)
+
+
+TRUE = Constant(True)
+FALSE = Constant(False)
+
+
+@dataclass(frozen=True, eq=False, init=False, repr=False)
+class Atom(Formula):
+    """An atomic proposition, e.g. ``pick_up(knife)`` = ``Atom("pick_up", ("knife",))``."""
+
+    name: str
+    args: tuple[str, ...]
+    rank: ClassVar[int] = 1
+
+    def __new__(cls, name: str, args: tuple[str, ...] | list[str] = ()):
+        args = tuple(args)
+        for part in (name, *args):
+            if not isinstance(part, str) or not part or part != part.strip():
+                raise ValueError(f"bad atom part {part!r}: empty or padded with spaces")
+            if _FORBIDDEN_IN_NAMES & set(part):
+                raise ValueError(f"bad atom part {part!r}: contains one of ( ) \" ,")
+        node = _intern(cls, (name, args), (name, args), ())
+        if not node.atoms:
+            object.__setattr__(node, "atoms", frozenset((node,)))
+        return node
+
+    def constructor_args(self) -> tuple:
+        return (self.name, self.args)
+
+    @property
+    def text(self) -> str:
+        """The atom as written in a trace step, e.g. ``slice(tomato, knife)``."""
+        return f"{self.name}({', '.join(self.args)})" if self.args else self.name
+
+
+@dataclass(frozen=True, eq=False, init=False, repr=False)
+class _Unary(Formula):
+    arg: Formula
+
+    def __new__(cls, arg: Formula):
+        return _intern(cls, (arg,), (arg.key,), (arg,))
+
+    def constructor_args(self) -> tuple:
+        return (self.arg,)
+
+
+@dataclass(frozen=True, eq=False, init=False, repr=False)
+class _Binary(Formula):
+    left: Formula
+    right: Formula
+
+    def __new__(cls, left: Formula, right: Formula):
+        return _intern(cls, (left, right), (left.key, right.key), (left, right))
+
+    def constructor_args(self) -> tuple:
+        return (self.left, self.right)
+
+
+class Not(_Unary):
+    rank = 2
+
+    def __new__(cls, arg: Formula):
+        if isinstance(arg, Not):
+            return arg.arg
+        if isinstance(arg, Constant):
+            return FALSE if arg.value else TRUE
+        return super().__new__(cls, arg)
+
+
+class Next(_Unary):
+    """Strong next, Spot ``X[!]``: there is a next step and ``arg`` holds there."""
+
+    rank = 3
+
+
+class WeakNext(_Unary):
+    """Weak next, Spot ``X`` (LTLf reading): if there is a next step, ``arg`` holds there."""
+
+    rank = 4
+
+
+class Eventually(_Unary):
+    rank = 5
+
+
+class Always(_Unary):
+    rank = 6
+
+
+class Until(_Binary):
+    rank = 7
+
+
+class Release(_Binary):
+    rank = 8
+
+
+class WeakUntil(_Binary):
+    rank = 9
+
+
+class StrongRelease(_Binary):
+    """Spot ``M``: ``a M b`` = ``b U (a & b)``."""
+
+    rank = 10
+
+
+@dataclass(frozen=True, eq=False, init=False, repr=False)
+class _NAry(Formula):
+    args: tuple[Formula, ...]
+    unit: ClassVar[Constant]
+    zero: ClassVar[Constant]
+
+    def __new__(cls, *operands: Formula):
+        flat: set[Formula] = set()
+        for op in operands:
+            if op is cls.zero:
+                return cls.zero
+            if isinstance(op, cls):
+                flat.update(op.args)
+            elif op is not cls.unit:
+                flat.add(op)
+        if not flat:
+            return cls.unit
+        if len(flat) == 1:
+            return flat.pop()
+        ordered = tuple(sorted(flat, key=lambda f: f.key))
+        return _intern(cls, (ordered,), (tuple(f.key for f in ordered),), ordered)
+
+    def constructor_args(self) -> tuple:
+        return (self.args,)
+
+    @property
+    def children(self) -> tuple[Formula, ...]:
+        return self.args
+
+
+class And(_NAry):
+    rank = 11
+    unit = TRUE
+    zero = FALSE
+
+
+class Or(_NAry):
+    rank = 12
+    unit = FALSE
+    zero = TRUE
+
+
+class Implies(_Binary):
+    rank = 13
+
+
+class Equiv(_Binary):
+    rank = 14
+
+
+UNARY_TEMPORAL = (Next, WeakNext, Eventually, Always)
+BINARY_TEMPORAL = (Until, Release, WeakUntil, StrongRelease)
+
+
+def negate(f: Formula) -> Formula:
+    """``¬f`` with the negation pushed one level down (negation normal form, lazily).
+
+    Atoms keep a plain ``Not``; everything else uses its dual, e.g.
+    ``¬(a U b) = ¬a R ¬b`` and ``¬X[!]a = X¬a``.
+    """
+    match f:
+        case Constant() | Atom():
+            return Not(f)
+        case Not(arg=inner):
+            return inner
+        case And(args=args):
+            return Or(*(Not(a) for a in args))
+        case Or(args=args):
+            return And(*(Not(a) for a in args))
+        case Implies(left=a, right=b):
+            return And(a, Not(b))
+        case Equiv(left=a, right=b):
+            return Or(And(a, Not(b)), And(Not(a), b))
+        case Next(arg=a):
+            return WeakNext(Not(a))
+        case WeakNext(arg=a):
+            return Next(Not(a))
+        case Eventually(arg=a):
+            return Always(Not(a))
+        case Always(arg=a):
+            return Eventually(Not(a))
+        case Until(left=a, right=b):
+            return Release(Not(a), Not(b))
+        case Release(left=a, right=b):
+            return Until(Not(a), Not(b))
+        case WeakUntil(left=a, right=b):
+            return StrongRelease(Not(a), Not(b))
+        case StrongRelease(left=a, right=b):
+            return WeakUntil(Not(a), Not(b))
+    raise TypeError(f"not a formula: {f!r}")
+
+
+@lru_cache(maxsize=1 << 16)
+def holds_at_end(f: Formula) -> bool:
+    """Does ``f`` hold on the empty rest of a trace, i.e. if the trace ended here?
+
+    A remaining obligation is read over the rest of the trace, which may be
+    empty. Then atoms and negated atoms are both false (there is no step to
+    look at), strong operators (``X[!] F U M``) are false and weak ones
+    (``X G R W``) true.
+    """
+    match f:
+        case Constant(value=v):
+            return v
+        case Atom() | Next() | Eventually() | Until() | StrongRelease():
+            return False
+        case WeakNext() | Always() | Release() | WeakUntil():
+            return True
+        case Not(arg=Atom()):
+            return False
+        case Not(arg=inner):
+            return holds_at_end(negate(inner))
+        case And(args=args):
+            return all(holds_at_end(a) for a in args)
+        case Or(args=args):
+            return any(holds_at_end(a) for a in args)
+        case Implies(left=a, right=b):
+            return holds_at_end(Not(a)) or holds_at_end(b)
+        case Equiv(left=a, right=b):
+            return holds_at_end(Or(And(a, b), And(Not(a), Not(b))))
+    raise TypeError(f"not a formula: {f!r}")

@@ -1,0 +1,189 @@
+"""Read LTLf formulas written in Spot's ASCII syntax or in Unicode.
+
+``parse("F(pick_up(knife) & F \\"slice(tomato, knife)\\")")`` builds the
+canonical AST of :mod:`cook2ltl.ltl.ast`. Bad input raises
+:class:`LTLSyntaxError`, which carries the line and column of the fault.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from importlib import resources
+
+from lark import Lark, Token, Transformer, v_args
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
+
+from cook2ltl.ltl.ast import (
+    FALSE,
+    TRUE,
+    And,
+    Atom,
+    Equiv,
+    Eventually,
+    Formula,
+    Always,
+    Implies,
+    Next,
+    Not,
+    Or,
+    Release,
+    StrongRelease,
+    Until,
+    WeakNext,
+    WeakUntil,
+)
+
+_UNARY = {
+    "X[!]": Next, "○[!]": Next,
+    "X": WeakNext, "○": WeakNext,
+    "F": Eventually, "◇": Eventually, "<>": Eventually,
+    "G": Always, "□": Always, "[]": Always,
+    "!": Not, "¬": Not,
+}  # fmt: skip
+_BINARY = {
+    "U": Until, "𝒰": Until,
+    "R": Release, "ℛ": Release,
+    "W": WeakUntil, "𝒲": WeakUntil,
+    "M": StrongRelease, "ℳ": StrongRelease,
+}  # fmt: skip
+
+# What the lexer's terminal names mean to a person reading an error.
+_TERMINAL_WORDS = {
+    "NAME": "an atom",
+    "QUOTED": "a quoted atom",
+    "ARG": "an argument",
+    "UNOP": "a prefix operator",
+    "BINOP": "U, R, W or M",
+    "LPAR": "'('",
+    "RPAR": "')'",
+    "COMMA": "','",
+    "AND": "'&'",
+    "OR": "'|'",
+    "IMPLIES": "'->'",
+    "EQUIV": "'<->'",
+    "TRUE": "true",
+    "FALSE": "false",
+    "$END": "end of input",
+}
+
+
+class LTLSyntaxError(ValueError):
+    """A formula that cannot be read; ``line`` and ``column`` count from 1."""
+
+    def __init__(self, message: str, text: str, line: int, column: int):
+        self.text = text
+        self.line = line
+        self.column = column
+        self.reason = message
+        super().__init__(f"line {line}, column {column}: {message}\n{self.pointer()}")
+
+    def pointer(self) -> str:
+        """The faulty line with a caret under the fault."""
+        lines = self.text.splitlines() or [""]
+        source = lines[min(self.line, len(lines)) - 1]
+        return f"  {source}\n  {' ' * (self.column - 1)}^"
+
+
+class _Bad(ValueError):
+    """Raised inside the transformer; carries the token where it went wrong."""
+
+    def __init__(self, message: str, token: Token):
+        super().__init__(message)
+        self.token = token
+
+
+def atom_from_text(content: str) -> Atom:
+    """``"slice(tomato, knife)"`` (without the quotes) -> ``Atom("slice", ("tomato", "knife"))``."""
+    content = content.strip()
+    name, args = content, ()
+    if content.endswith(")") and "(" in content:
+        name, _, inner = content[:-1].partition("(")
+        name = name.strip()
+        args = tuple(a.strip() for a in inner.split(",")) if inner.strip() else ()
+    return Atom(name, args)
+
+
+@v_args(inline=True)
+class _Build(Transformer):
+    def start(self, f):
+        return f
+
+    def true(self, _):
+        return TRUE
+
+    def false(self, _):
+        return FALSE
+
+    def plain_atom(self, name, *args):
+        return Atom(str(name), tuple(str(a) for a in args if a is not None))
+
+    def quoted_atom(self, token):
+        try:
+            return atom_from_text(token[1:-1])
+        except ValueError as err:
+            raise _Bad(f"bad quoted atom {token}: {err}", token) from None
+
+    def unary(self, op, arg):
+        return _UNARY[str(op)](arg)
+
+    def binary(self, left, op, right):
+        return _BINARY[str(op)](left, right)
+
+    def and_(self, left, _op, right):
+        return And(left, right)
+
+    def or_(self, left, _op, right):
+        return Or(left, right)
+
+    def implies(self, left, _op, right):
+        return Implies(left, right)
+
+    def equiv(self, left, _op, right):
+        return Equiv(left, right)
+
+
+@lru_cache(maxsize=1)
+def _lark() -> Lark:
+    grammar = resources.files("cook2ltl.ltl").joinpath("grammar.lark").read_text("utf-8")
+    return Lark(grammar, parser="lalr", lexer="contextual", propagate_positions=False)
+
+
+def _describe(expected: set[str]) -> str:
+    words = sorted({_TERMINAL_WORDS.get(name, name.lower()) for name in expected})
+    return ", ".join(words)
+
+
+def parse(text: str) -> Formula:
+    """Parse one formula; raise :class:`LTLSyntaxError` if it is not well formed."""
+    try:
+        tree = _lark().parse(text)
+    except UnexpectedEOF as err:
+        raise LTLSyntaxError(
+            f"formula ends too early; expected {_describe(set(err.expected))}",
+            text,
+            *_end_position(text),
+        ) from None
+    except UnexpectedCharacters as err:
+        raise LTLSyntaxError(
+            f"unexpected character {text[err.pos_in_stream]!r}", text, err.line, err.column
+        ) from None
+    except UnexpectedInput as err:  # UnexpectedToken
+        token = err.token
+        found = "end of input" if token.type == "$END" else repr(str(token))
+        expected = getattr(err, "accepts", None) or getattr(err, "expected", set())
+        at_end = token.type == "$END" or err.line < 1
+        line, column = _end_position(text) if at_end else (err.line, err.column)
+        raise LTLSyntaxError(
+            f"unexpected {found}; expected {_describe(set(expected))}", text, line, column
+        ) from None
+    try:
+        return _Build().transform(tree)
+    except VisitError as err:
+        cause = err.orig_exc
+        if isinstance(cause, _Bad):
+            raise LTLSyntaxError(str(cause), text, cause.token.line, cause.token.column) from None
+        raise
+
+
+def _end_position(text: str) -> tuple[int, int]:
+    return text.count("\n") + 1, len(text.rsplit("\n", 1)[-1]) + 1

@@ -1,0 +1,123 @@
+"""Print formulas in Unicode (for people) or in Spot's ASCII syntax (for tools).
+
+Both outputs parse back to the same formula: ``parse(to_unicode(f)) is f`` and
+``parse(to_spot(f)) is f``. Spot cannot read ``pick_up(knife)``, so the ASCII
+printer quotes every atom with arguments: ``"pick_up(knife)"``.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from cook2ltl.ltl.ast import (
+    And,
+    Atom,
+    Constant,
+    Equiv,
+    Formula,
+    Implies,
+    Not,
+    Or,
+    Always,
+    Eventually,
+    Next,
+    Release,
+    StrongRelease,
+    Until,
+    WeakNext,
+    WeakUntil,
+)
+
+_NAME = re.compile(r"[a-z_][A-Za-z0-9_]*\Z")
+_ARG = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.\-]*\Z")
+_KEYWORDS = frozenset({"true", "false"})
+
+
+@dataclass(frozen=True)
+class _Style:
+    true: str
+    false: str
+    prefix: dict[type, str]
+    infix: dict[type, str]
+    quote_all_args: bool
+
+
+_UNICODE = _Style(
+    true="⊤",
+    false="⊥",
+    prefix={Not: "¬", Next: "○[!]", WeakNext: "○", Eventually: "◇", Always: "□"},
+    infix={
+        And: " ∧ ", Or: " ∨ ", Implies: " → ", Equiv: " ↔ ",
+        Until: " 𝒰 ", Release: " ℛ ", WeakUntil: " 𝒲 ", StrongRelease: " ℳ ",
+    },
+    quote_all_args=False,
+)  # fmt: skip
+
+_SPOT = _Style(
+    true="true",
+    false="false",
+    prefix={Not: "!", Next: "X[!]", WeakNext: "X", Eventually: "F", Always: "G"},
+    infix={
+        And: " & ", Or: " | ", Implies: " -> ", Equiv: " <-> ",
+        Until: " U ", Release: " R ", WeakUntil: " W ", StrongRelease: " M ",
+    },
+    quote_all_args=True,
+)  # fmt: skip
+
+
+def to_unicode(f: Formula) -> str:
+    """``◇(pick_up(knife) ∧ ◇slice(tomato, knife))``."""
+    return _print(f, _UNICODE)
+
+
+def to_spot(f: Formula) -> str:
+    """``F("pick_up(knife)" & F"slice(tomato, knife)")``, readable by Spot."""
+    return _print(f, _SPOT)
+
+
+def atom_to_text(atom: Atom, *, quote_args: bool = False) -> str:
+    """The atom as it is written inside a formula, quoted when it must be."""
+    plain = (
+        _NAME.match(atom.name)
+        and atom.name not in _KEYWORDS
+        and not (quote_args and atom.args)
+        and all(_ARG.match(a) for a in atom.args)
+    )
+    return atom.text if plain else f'"{atom.text}"'
+
+
+def _is_atomic(f: Formula) -> bool:
+    return isinstance(f, (Atom, Constant))
+
+
+def _print(f: Formula, style: _Style) -> str:
+    match f:
+        case Constant(value=v):
+            return style.true if v else style.false
+        case Atom():
+            return atom_to_text(f, quote_args=style.quote_all_args)
+        case Not() | Next() | WeakNext() | Eventually() | Always():
+            # Prefix operators bind tightest: only an operand that is itself
+            # prefix or atomic goes without parentheses.
+            inner = _print(f.arg, style)
+            if not (_is_atomic(f.arg) or type(f.arg) in style.prefix):
+                inner = f"({inner})"
+            return style.prefix[type(f)] + inner
+        case And(args=args) | Or(args=args):
+            return style.infix[type(f)].join(_operand(a, style) for a in args)
+        case _:
+            op = style.infix[type(f)]
+            return _operand(f.left, style) + op + _operand(f.right, style)
+
+
+def _operand(f: Formula, style: _Style) -> str:
+    """An operand of an infix operator: parenthesised unless atomic or prefix.
+
+    Spot's precedences would allow fewer parentheses, but ``a ∧ b ∨ c`` or
+    ``a 𝒰 b 𝒰 c`` make a reader stop and think; the parentheses are cheap.
+    """
+    text = _print(f, style)
+    if _is_atomic(f) or type(f) in style.prefix:
+        return text
+    return f"({text})"

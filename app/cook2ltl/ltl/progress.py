@@ -1,0 +1,178 @@
+"""LTLf progression (Bacchus & Kabanza) and a step-by-step monitor.
+
+A trace is a finite sequence of steps; a step is the set of atoms true in it
+(the action done and the state predicates that hold). ``progress(f, step)``
+is the obligation the *rest* of the trace must meet for the whole trace to
+satisfy ``f``. The rest may be empty — a recipe ends — and
+:func:`~cook2ltl.ltl.ast.holds_at_end` says whether ending now is fine.
+
+Semantics (finite traces, LTLf), stated once for the whole package:
+
+* Spot ``X`` is the **weak** next (``WeakNext``): true at the last step.
+  Spot ``X[!]`` is the **strong** next (``Next``): false at the last step.
+  This is Spot's own LTLf reading; flloat and ltlf2dfa write them ``WX`` and
+  ``X``, and the oracle tests translate accordingly.
+* ``F U M`` are strong (need a step where their goal holds), ``G R W`` weak.
+* A trace of n steps satisfies ``f`` iff ``holds_at_end`` of ``f`` progressed
+  through its n steps is true, and this is exactly the LTLf semantics for
+  n ≥ 1. For n = 0 (no step yet) it is the natural reading on an empty trace.
+
+Progressing a strong next ``X[!]ψ`` yields ``ψ`` — or ``ψ ∧ ◇⊤`` ("and the
+trace goes on") when ``ψ`` alone would accept the trace ending there; the weak
+next ``Xψ`` yields ``ψ`` or ``ψ ∨ □⊥`` ("or the trace has ended").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from enum import Enum
+from functools import lru_cache
+
+from cook2ltl.ltl.ast import (
+    FALSE,
+    TRUE,
+    Always,
+    And,
+    Atom,
+    Constant,
+    Equiv,
+    Eventually,
+    Formula,
+    Implies,
+    Next,
+    Not,
+    Or,
+    Release,
+    StrongRelease,
+    Until,
+    WeakNext,
+    WeakUntil,
+    holds_at_end,
+    negate,
+)
+from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, or_
+
+Step = frozenset[Atom]
+
+
+class Verdict(Enum):
+    """Where a trace stands after its last step."""
+
+    SATISFIED = "satisfied"  # every continuation, the empty one included, satisfies
+    VIOLATED = "violated"  # no continuation can satisfy
+    PRESUMABLY_TRUE = "presumably_true"  # satisfied if the trace ended now
+    PRESUMABLY_FALSE = "presumably_false"  # violated if the trace ended now
+
+    @property
+    def holds(self) -> bool:
+        """Does the trace so far satisfy the formula (if it ends here)?"""
+        return self in (Verdict.SATISFIED, Verdict.PRESUMABLY_TRUE)
+
+
+def verdict(remaining: Formula) -> Verdict:
+    """The verdict for a remaining obligation."""
+    if remaining is TRUE:
+        return Verdict.SATISFIED
+    if remaining is FALSE:
+        return Verdict.VIOLATED
+    return Verdict.PRESUMABLY_TRUE if holds_at_end(remaining) else Verdict.PRESUMABLY_FALSE
+
+
+def progress(formula: Formula, step: Iterable[Atom]) -> Formula:
+    """The obligation left for the rest of the trace after ``step``."""
+    # Atoms the formula does not mention cannot matter; dropping them makes
+    # the memo table hit far more often.
+    return _progress(formula, frozenset(step) & formula.atoms)
+
+
+@lru_cache(maxsize=1 << 18)
+def _progress(f: Formula, step: Step) -> Formula:
+    match f:
+        case Constant():
+            return f
+        case Atom():
+            return TRUE if f in step else FALSE
+        case Not(arg=Atom() as a):
+            return FALSE if a in step else TRUE
+        case Not(arg=inner):
+            return _progress(negate(inner), step)
+        case And(args=args):
+            return _progress_and(args, step)
+        case Or(args=args):
+            return _progress_or(args, step)
+        case Implies(left=a, right=b):
+            return _progress_or((Not(a), b), step)
+        case Equiv(left=a, right=b):
+            return _progress_or((And(a, b), And(Not(a), Not(b))), step)
+        case Next(arg=a):
+            return and_(a, NONEMPTY) if holds_at_end(a) else a
+        case WeakNext(arg=a):
+            return a if holds_at_end(a) else or_(a, EMPTY)
+        case Eventually(arg=a):
+            return or_(_progress(a, step), f)
+        case Always(arg=a):
+            return and_(_progress(a, step), f)
+        case Until(left=a, right=b) | WeakUntil(left=a, right=b):
+            # b now, or a now and the same obligation from the next step on.
+            now = _progress(b, step)
+            return now if now is TRUE else or_(now, and_(_progress(a, step), f))
+        case Release(left=a, right=b) | StrongRelease(left=a, right=b):
+            # b now, and either a now (released) or the same obligation next.
+            now = _progress(b, step)
+            return now if now is FALSE else and_(now, or_(_progress(a, step), f))
+    raise TypeError(f"not a formula: {f!r}")
+
+
+def _progress_and(args: tuple[Formula, ...], step: Step) -> Formula:
+    # Operands are sorted atoms first, so a sequence like a ∧ ◇(…) stops at a
+    # failed atom without walking the rest of the recipe.
+    done = []
+    for a in args:
+        p = _progress(a, step)
+        if p is FALSE:
+            return FALSE
+        done.append(p)
+    return and_(*done)
+
+
+def _progress_or(args: tuple[Formula, ...], step: Step) -> Formula:
+    done = []
+    for a in args:
+        p = _progress(a, step)
+        if p is TRUE:
+            return TRUE
+        done.append(p)
+    return or_(*done)
+
+
+def progress_trace(formula: Formula, trace: Iterable[Iterable[Atom]]) -> Formula:
+    """The obligation left after the whole trace."""
+    for step in trace:
+        formula = progress(formula, step)
+    return formula
+
+
+def holds(formula: Formula, trace: Iterable[Iterable[Atom]]) -> bool:
+    """Does the finite trace satisfy the formula (LTLf)?"""
+    return holds_at_end(progress_trace(formula, trace))
+
+
+@dataclass(frozen=True)
+class StepResult:
+    index: int  # 1 for the first step
+    step: Step
+    remaining: Formula
+    verdict: Verdict
+
+
+def monitor(formula: Formula, trace: Iterable[Iterable[Atom]]) -> Iterator[StepResult]:
+    """Progress through the trace, yielding the obligation and verdict after each step.
+
+    Once the obligation is ``⊤`` or ``⊥`` it never changes; the monitor still
+    reports every step so the caller can show them all.
+    """
+    for index, step in enumerate(trace, start=1):
+        step = frozenset(step)
+        formula = progress(formula, step)
+        yield StepResult(index, step, formula, verdict(formula))

@@ -1,0 +1,216 @@
+"""Simplify formulas and keep what is left readable.
+
+The rules never restructure a formula into a normal form; they only fold
+constants, drop operands that another operand already settles and merge
+repeated operators. So after ``pick_up(knife)`` the obligation
+``◇(pick_up(knife) ∧ ◇slice(tomato))`` becomes ``◇slice(tomato)``, not a
+rewritten equivalent.
+
+Every rule is sound on *possibly empty* traces, because remaining obligations
+are read over the rest of a trace, which is empty once the trace ends (see
+:func:`cook2ltl.ltl.ast.holds_at_end`). That rules out some classical
+identities: ``a ∨ ¬a`` is not ``⊤`` (both need a step) and ``◇⊤`` is not
+``⊤`` (it says "the trace goes on"), so neither is rewritten.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from cook2ltl.ltl.ast import (
+    FALSE,
+    TRUE,
+    Always,
+    And,
+    Atom,
+    Constant,
+    Equiv,
+    Eventually,
+    Formula,
+    Implies,
+    Next,
+    Not,
+    Or,
+    Release,
+    StrongRelease,
+    Until,
+    WeakNext,
+    WeakUntil,
+    holds_at_end,
+)
+
+NONEMPTY = Eventually(TRUE)  # "the trace goes on": false only on the empty rest
+EMPTY = Always(FALSE)  # "the trace has ended": true only on the empty rest
+
+
+@lru_cache(maxsize=1 << 18)
+def implies(x: Formula, y: Formula) -> bool:
+    """A cheap, sound and incomplete test of ``x ⇒ y`` on possibly empty traces."""
+    if x is y or x is FALSE or y is TRUE:
+        return True
+    if isinstance(y, And):
+        return all(implies(x, c) for c in y.args)
+    if isinstance(x, Or):
+        return all(implies(c, y) for c in x.args)
+    if isinstance(x, And) and any(implies(c, y) for c in x.args):
+        return True
+    if isinstance(y, Or) and any(implies(x, c) for c in y.args):
+        return True
+    if isinstance(y, Eventually):
+        # x needs a step and entails the goal now, or x promises it later.
+        if not holds_at_end(x) and implies(x, y.arg):
+            return True
+        if isinstance(x, Eventually) and implies(x.arg, y):
+            return True
+        if isinstance(x, (Until, StrongRelease)) and implies(x.right, y):
+            return True
+    if isinstance(x, Always) and holds_at_end(y) and implies(x.arg, y):
+        return True
+    return _same_operator_implies(x, y)
+
+
+# Operator pairs (stronger, weaker) whose operands may then be compared pairwise.
+_WEAKENINGS = {
+    (Next, Next), (WeakNext, WeakNext), (Next, WeakNext),
+    (Eventually, Eventually), (Always, Always),
+    (Until, Until), (Release, Release), (WeakUntil, WeakUntil), (StrongRelease, StrongRelease),
+    (Until, WeakUntil), (StrongRelease, Release),
+}  # fmt: skip
+
+
+def _same_operator_implies(x: Formula, y: Formula) -> bool:
+    # All temporal operators are monotone in each operand.
+    if (type(x), type(y)) not in _WEAKENINGS:
+        return False
+    return all(implies(a, b) for a, b in zip(x.children, y.children))
+
+
+def and_(*operands: Formula) -> Formula:
+    """Conjunction without contradictions and without operands a stronger one settles."""
+    f = And(*operands)
+    if not isinstance(f, And):
+        return f
+    present = set(f.args)
+    if any(isinstance(a, Not) and a.arg in present for a in f.args):
+        return FALSE
+    kept: list[Formula] = []
+    for a in f.args:
+        if any(implies(k, a) for k in kept):
+            continue
+        kept = [k for k in kept if not implies(a, k)]
+        kept.append(a)
+    return And(*kept)
+
+
+def or_(*operands: Formula) -> Formula:
+    """Disjunction without operands that a weaker one already covers."""
+    f = Or(*operands)
+    if not isinstance(f, Or):
+        return f
+    kept: list[Formula] = []
+    for a in f.args:
+        if any(implies(a, k) for k in kept):
+            continue
+        kept = [k for k in kept if not implies(k, a)]
+        kept.append(a)
+    return Or(*kept)
+
+
+def eventually(f: Formula) -> Formula:
+    if f is FALSE or isinstance(f, Eventually):
+        return f
+    return Eventually(f)
+
+
+def always(f: Formula) -> Formula:
+    if f is TRUE or isinstance(f, Always):
+        return f
+    return Always(f)
+
+
+def _and_nonempty(f: Formula) -> Formula:
+    """``f`` on a trace that goes on: the constant rules below need it."""
+    return and_(f, NONEMPTY) if holds_at_end(f) else f
+
+
+def _or_empty(f: Formula) -> Formula:
+    return f if holds_at_end(f) else or_(f, EMPTY)
+
+
+@lru_cache(maxsize=1 << 16)
+def simplify(f: Formula) -> Formula:
+    """Fold constants, drop settled operands and merge ``◇◇``, ``□□``, bottom up."""
+    match f:
+        case Constant() | Atom():
+            return f
+        case Not(arg=a):
+            return Not(simplify(a))
+        case And(args=args):
+            return and_(*(simplify(a) for a in args))
+        case Or(args=args):
+            return or_(*(simplify(a) for a in args))
+        case Next(arg=a):
+            a = simplify(a)
+            return FALSE if a is FALSE else Next(a)
+        case WeakNext(arg=a):
+            a = simplify(a)
+            return TRUE if a is TRUE else WeakNext(a)
+        case Eventually(arg=a):
+            return eventually(simplify(a))
+        case Always(arg=a):
+            return always(simplify(a))
+        case Implies(left=a, right=b):
+            return _implies(simplify(a), simplify(b))
+        case Equiv(left=a, right=b):
+            return _equiv(simplify(a), simplify(b))
+    return _binary_temporal(type(f), simplify(f.left), simplify(f.right))
+
+
+def _implies(a: Formula, b: Formula) -> Formula:
+    if a is TRUE:
+        return b
+    if a is FALSE or b is TRUE:
+        return TRUE
+    if b is FALSE:
+        return Not(a)
+    return Implies(a, b)
+
+
+def _equiv(a: Formula, b: Formula) -> Formula:
+    for x, y in ((a, b), (b, a)):
+        if isinstance(x, Constant):
+            return y if x.value else Not(y)
+    return Equiv(a, b)
+
+
+def _binary_temporal(op: type, a: Formula, b: Formula) -> Formula:
+    """Constant operands of U R W M; each case is the operator's definition."""
+    if op is Until:
+        if b is FALSE or b is TRUE:
+            return NONEMPTY if b is TRUE else FALSE
+        if a is TRUE:
+            return eventually(b)
+        if a is FALSE:
+            return _and_nonempty(b)
+    elif op is Release:
+        if b is TRUE or b is FALSE:
+            return TRUE if b is TRUE else EMPTY
+        if a is FALSE:
+            return always(b)
+        if a is TRUE:
+            return _or_empty(b)
+    elif op is WeakUntil:
+        if a is TRUE or b is TRUE:
+            return TRUE
+        if b is FALSE:
+            return always(a)
+        if a is FALSE:
+            return _or_empty(b)
+    else:  # StrongRelease: a M b = b U (a ∧ b)
+        if a is FALSE or b is FALSE:
+            return FALSE
+        if b is TRUE:
+            return eventually(a)
+        if a is TRUE:
+            return _and_nonempty(b)
+    return op(a, b)
