@@ -40,7 +40,8 @@ def step_ok(controller, action, **args):
 
 
 def test_the_plain_controller_constructor_launches_the_kitchen(thor_home):
-    c = Controller(local_executable_path=str(embedded_executable()), scene="FloorPlan2", x_display=":0", width=64, height=48)
+    executable = str(embedded_executable())
+    c = Controller(local_executable_path=executable, scene="FloorPlan2", x_display=":0", width=64, height=48)
     try:
         event = c.last_event
         assert event.metadata["sceneName"] == "FloorPlan2_physics"

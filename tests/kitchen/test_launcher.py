@@ -22,7 +22,16 @@ COMMIT = "f0825767cd50d69f666c7f282e54abfe58f1e917"
 
 
 @pytest.fixture
-def fake_player(tmp_path, thor_home):
+def home(thor_home, tmp_path, monkeypatch):
+    """A HOME of this test's own, so staged releases do not leak between tests."""
+    path = tmp_path / "home"
+    path.mkdir()
+    monkeypatch.setenv("HOME", str(path))
+    return path
+
+
+@pytest.fixture
+def fake_player(tmp_path, home):
     """Write a shell script standing in for a THOR player; it records its pid."""
 
     def write(body: str):
@@ -67,12 +76,12 @@ def test_a_player_that_dies_at_once_is_reported_at_once(fake_player):
     assert_gone(pid_file)
 
 
-def test_no_build_installed(thor_home):
+def test_no_build_installed(home):
     with pytest.raises(KitchenUnavailable, match="no AI2-THOR build installed: set COOK2LTL_THOR_EXECUTABLE"):
         find_thor_build()
 
 
-def test_an_explicit_path_must_be_an_executable(thor_home, tmp_path, monkeypatch):
+def test_an_explicit_path_must_be_an_executable(home, tmp_path, monkeypatch):
     monkeypatch.setenv("COOK2LTL_THOR_EXECUTABLE", str(tmp_path / "missing"))
     with pytest.raises(KitchenUnavailable, match="is not an executable file"):
         find_thor_build()
@@ -88,31 +97,27 @@ def stage_release(home, platform: str):
     return folder
 
 
-def test_a_staged_release_is_found(thor_home):
-    folder = stage_release(thor_home, "CloudRendering")
-    try:
-        assert find_thor_build() == ThorBuild(platform="CloudRendering", commit_id=COMMIT)
-    finally:
-        (folder / folder.name).unlink()
+def test_a_staged_release_is_found(home):
+    stage_release(home, "CloudRendering")
+    assert find_thor_build() == ThorBuild(platform="CloudRendering", commit_id=COMMIT)
 
 
-def test_a_linux64_release_without_a_display_is_unavailable(thor_home, monkeypatch):
+def test_a_linux64_release_without_a_display_is_unavailable(home, monkeypatch):
     monkeypatch.delenv("DISPLAY", raising=False)
     build = ThorBuild(platform="Linux64", commit_id=COMMIT)
     with pytest.raises(KitchenUnavailable, match="needs an X display"):
         start_thor(build=build, start_timeout=5.0)
 
 
-def test_a_staged_release_that_cannot_run_is_unavailable(thor_home):
+def test_a_staged_release_that_cannot_run_is_unavailable(home):
     # Without Vulkan the Controller refuses CloudRendering; with it, the stand-in exits.
-    stage_release(thor_home, "CloudRendering")
+    stage_release(home, "CloudRendering")
     build = ThorBuild(platform="CloudRendering", commit_id=COMMIT)
     with pytest.raises(KitchenUnavailable, match="^THOR unavailable: "):
         start_thor(build=build, start_timeout=5.0)
 
 
-def test_auto_falls_back_to_the_embedded_kitchen(thor_home, monkeypatch):
-    monkeypatch.setattr("cook2ltl.kitchen.launcher.Path.home", lambda: thor_home / "nowhere")
+def test_auto_falls_back_to_the_embedded_kitchen(home):
     controller = start_kitchen("FloorPlan3", backend="auto", width=64, height=64)
     try:
         assert controller.last_event.metadata["sceneName"] == "FloorPlan3_physics"
@@ -120,8 +125,21 @@ def test_auto_falls_back_to_the_embedded_kitchen(thor_home, monkeypatch):
         controller.stop()
 
 
-def test_unknown_scenes_fail_before_anything_starts(thor_home):
+def test_arguments_are_checked_before_anything_starts(home):
     with pytest.raises(UnknownScene):
         start_kitchen("FloorPlan999", backend="embedded")
     with pytest.raises(ValueError, match="backend must be"):
         start_kitchen("FloorPlan1", backend="unity")
+    with pytest.raises(ValueError, match="embedded-only"):
+        start_thor(build=ThorBuild(platform="CloudRendering"), slice_needs_knife=False)
+
+
+def test_the_configured_executable_and_its_platform(home, tmp_path, monkeypatch):
+    binary = tmp_path / "thor-Linux64-local"
+    binary.write_text("#!/bin/sh\n")
+    binary.chmod(0o755)
+    monkeypatch.setenv("COOK2LTL_THOR_EXECUTABLE", str(binary))
+    assert find_thor_build() == ThorBuild(platform="Linux64", executable=binary)
+    monkeypatch.setenv("COOK2LTL_THOR_PLATFORM", "WebGL")
+    with pytest.raises(KitchenUnavailable, match="use one of Linux64, CloudRendering"):
+        find_thor_build()

@@ -49,17 +49,23 @@ class ThorBuild:
     commit_id: str | None = None  # set for a staged release
 
 
-def start_kitchen(scene: str = "FloorPlan1", backend: str = "auto", **options: Any):
+def start_kitchen(
+    scene: str = "FloorPlan1",
+    backend: str = "auto",
+    *,
+    thor_executable: str | os.PathLike | None = None,
+    **options: Any,
+):
     """A started Controller. backend: "embedded", "thor", or "auto" (a real THOR
-    build if one is configured or staged, else the embedded kitchen)."""
+    build if one is given, configured or staged, else the embedded kitchen)."""
     if backend == "embedded":
         return start_embedded(scene, **options)
     if backend == "thor":
-        return start_thor(scene, **options)
+        return start_thor(scene, executable=thor_executable, **options)
     if backend != "auto":
         raise ValueError(f"backend must be 'embedded', 'thor' or 'auto', not {backend!r}")
     try:
-        build = find_thor_build()
+        build = find_thor_build(thor_executable)
     except KitchenUnavailable:
         return start_embedded(scene, **options)
     return start_thor(scene, build=build, **options)
@@ -96,16 +102,22 @@ def start_thor(
     scene: str = "FloorPlan1",
     *,
     build: ThorBuild | None = None,
+    executable: str | os.PathLike | None = None,
+    x_display: str | None = None,
     width: int = 300,
     height: int = 300,
     start_timeout: float = 120.0,
     step_timeout: float = 100.0,
+    slice_needs_knife: bool = True,
     **init_params: Any,
 ):
-    """A Controller driving a real AI2-THOR build; KitchenUnavailable if there is none that runs."""
-    build = build or find_thor_build()
+    """A Controller driving a real AI2-THOR build (`build`, else `find_thor_build(executable)`);
+    KitchenUnavailable if there is none that runs."""
+    if not slice_needs_knife:
+        raise ValueError("slice_needs_knife=False is embedded-only: a real THOR build always needs a knife to slice")
+    build = build or find_thor_build(executable)
     Controller = _controller_class()
-    display = os.environ.get("DISPLAY")
+    display = x_display or os.environ.get("DISPLAY")
     if build.platform == "Linux64" and not display:
         raise KitchenUnavailable("the Linux64 build needs an X display (DISPLAY is unset); use a CloudRendering build")
     common = dict(
@@ -137,7 +149,8 @@ def find_thor_build(executable: str | os.PathLike | None = None) -> ThorBuild:
         path = Path(chosen).expanduser()
         if not (path.is_file() and os.access(path, os.X_OK)):
             raise KitchenUnavailable(f"{path} is not an executable file (from {THOR_EXECUTABLE_ENV} or settings)")
-        platform = os.environ.get(THOR_PLATFORM_ENV) or ("CloudRendering" if "CloudRendering" in path.name else "Linux64")
+        guessed = "CloudRendering" if "CloudRendering" in path.name else "Linux64"
+        platform = os.environ.get(THOR_PLATFORM_ENV) or guessed
         if platform not in PLATFORMS:
             raise KitchenUnavailable(f"{THOR_PLATFORM_ENV}={platform!r}; use one of {', '.join(PLATFORMS)}")
         return ThorBuild(platform=platform, executable=path)
@@ -159,7 +172,7 @@ def _staged_release(releases: Path) -> ThorBuild:
         )
     wanted = _controller_commit()
     preferred = "Linux64" if os.environ.get("DISPLAY") else "CloudRendering"
-    folder, platform, commit = max(
+    _, platform, commit = max(
         found, key=lambda f: (f[2] == wanted, f[1] == preferred, f[0].stat().st_mtime)
     )
     return ThorBuild(platform=platform, commit_id=commit)

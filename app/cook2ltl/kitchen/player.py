@@ -24,7 +24,7 @@ CLIENT_PIPE = "AI2THOR_FIFO_CLIENT_PIPE_PATH"  # Controller -> player
 def screen_size(argv: list[str]) -> tuple[int, int]:
     """Width and height from Unity-style flags (-screen-width 300 -screen-height 300)."""
     size = {"-screen-width": 300, "-screen-height": 300}
-    for flag, value in zip(argv, argv[1:]):
+    for flag, value in zip(argv, argv[1:], strict=False):
         if flag in size and value.isdigit() and int(value) > 0:
             size[flag] = int(value)
     return size["-screen-width"], size["-screen-height"]

@@ -14,7 +14,7 @@ import os
 import re
 import tomllib
 from dataclasses import replace
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
 
 from .state import ABILITIES, Agent, KitchenState, SliceRule, Thing, TypeRules
@@ -63,7 +63,7 @@ def load_type_rules() -> TypeRules:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def load_scene(name: str) -> KitchenState:
     """The scene's starting state (cached: states are immutable, so sharing is safe)."""
     scene = canonical_scene(name)
