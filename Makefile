@@ -1,0 +1,47 @@
+# Two commands do all set-up on a fresh machine: `make run` and `make test`.
+# Each step leaves a stamp in .venv, so a second run skips what is already done.
+
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+DEMO := assets/recipes/pasta-bake.txt
+# The native llama.cpp build segfaults on this class of machine (AMX kernels); this one does not.
+export CMAKE_ARGS := -DGGML_NATIVE=OFF -DLLAVA_BUILD=OFF
+export HF_HUB_OFFLINE := 1
+export TRANSFORMERS_OFFLINE := 1
+export OMP_WAIT_POLICY := passive
+
+.PHONY: run test models install doctor clean-venv
+
+run: models
+	$(BIN)/cook2ltl parse $(DEMO)
+
+test: models
+	@echo "==> [4/4] tests"
+	$(BIN)/python -m pytest
+
+models: install
+	@echo "==> [3/4] models (fetched or trained into the per-user cache; skipped when present)"
+	$(BIN)/cook2ltl models provision
+
+install: $(VENV)/.installed
+
+doctor: models
+	$(BIN)/cook2ltl doctor
+
+$(VENV)/.created:
+	@echo "==> [1/4] Python environment in $(VENV)"
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	@touch $@
+
+# torch first, pinned: its CPU build lies on this machine's disk, while a bare `torch` pulls a CUDA build.
+# llama-cpp-python compiles (3-10 minutes) the first time; pip caches the built wheel for later clones.
+$(VENV)/.installed: $(VENV)/.created pyproject.toml
+	@echo "==> [2/4] packages (torch CPU, llama-cpp-python build, the project)"
+	$(BIN)/python -m pip install --progress-bar off torch==2.13.0
+	$(BIN)/python -m pip install --progress-bar off -e ".[models,llm,dev]"
+	@touch $@
+
+clean-venv:
+	rm -rf $(VENV)

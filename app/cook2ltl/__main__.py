@@ -1,0 +1,3 @@
+from cook2ltl.cli import main
+
+main()

