@@ -2,7 +2,12 @@
 
 import io
 import json
+import os
 import struct
+import subprocess
+import sys
+import textwrap
+import time
 
 import msgpack
 import pytest
@@ -78,3 +83,35 @@ def test_the_session_reports_internal_errors_as_failed_actions():
     agent = session.failure({"action": "PickupObject", "sequenceId": 4}, "internal kitchen error: boom")["agents"][0]
     assert agent["sequenceId"] == 4 and not agent["lastActionSuccess"]
     assert agent["errorMessage"] == "internal kitchen error: boom"
+
+
+def test_the_player_ends_when_its_controller_dies(tmp_path):
+    # A parent that starts the player on pipes nobody opens, then dies: the
+    # player, blocked in open(), must not outlive it.
+    for name in ("server.pipe", "client.pipe"):
+        os.mkfifo(tmp_path / name)
+    pid_file = tmp_path / "player.pid"
+    parent = textwrap.dedent(
+        f"""
+        import os, subprocess, sys, time
+        env = dict(os.environ, AI2THOR_FIFO_SERVER_PIPE_PATH={str(tmp_path / "server.pipe")!r},
+                   AI2THOR_FIFO_CLIENT_PIPE_PATH={str(tmp_path / "client.pipe")!r})
+        player = subprocess.Popen([sys.executable, "-m", "cook2ltl.kitchen.player"], env=env)
+        open({str(pid_file)!r}, "w").write(str(player.pid))
+        time.sleep(2)  # let the player start and block before its parent goes
+        """
+    )
+    subprocess.run([sys.executable, "-c", parent], check=True, timeout=30)
+    pid = int(pid_file.read_text())
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline and _alive(pid):
+        time.sleep(0.1)
+    assert not _alive(pid)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    return True

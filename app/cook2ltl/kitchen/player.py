@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import os
 import sys
+import threading
+import time
 import traceback
 
 from . import protocol
@@ -46,6 +48,13 @@ def _answer(session: Session, action: dict) -> dict:
         return session.failure(action, f"internal kitchen error: {type(err).__name__}: {err}")
 
 
+def exit_with_parent(parent: int, every: float = 0.5) -> None:
+    """End the player once the Controller's process is gone: a FIFO open() would otherwise wait forever."""
+    while os.getppid() == parent:
+        time.sleep(every)
+    os._exit(0)
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     server_pipe, client_pipe = os.environ.get(SERVER_PIPE), os.environ.get(CLIENT_PIPE)
@@ -61,6 +70,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"cook2ltl kitchen player: only the FIFO server is supported, not {server_type}", file=sys.stderr)
         return 2
     width, height = screen_size(argv)
+    threading.Thread(target=exit_with_parent, args=(os.getppid(),), daemon=True).start()
     try:
         serve(Session(width=width, height=height), server_pipe, client_pipe)
     except BrokenPipeError:
