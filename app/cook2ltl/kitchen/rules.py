@@ -68,10 +68,10 @@ def settle(state: KitchenState) -> KitchenState:
 # --- argument and precondition helpers -------------------------------------
 
 
-def target(state: KitchenState, action: Mapping[str, Any], key: str = "objectId") -> Thing:
-    object_id = action.get(key)
+def target(state: KitchenState, action: Mapping[str, Any]) -> Thing:
+    object_id = action.get("objectId")
     if not object_id:
-        raise Refused(f"{action['action']} needs an {key}", "MissingArguments")
+        raise Refused(f"{action['action']} needs an objectId", "MissingArguments")
     thing = state.thing(object_id)
     if thing is None:
         raise Refused(f"No object with objectId {object_id!r} in {state.scene}")
@@ -105,7 +105,8 @@ def pickup(state, action):
     need(thing.can("pickupable"), f"{thing.object_id} is not pickupable")
     need(not thing.is_broken, f"{thing.object_id} is broken and cannot be picked up")
     reachable(state, thing, action)
-    objects = state.with_things(*_moved(state, thing, None, thing.position))
+    # In hand, the object has no container; what it carries stays inside it.
+    objects = state.with_things(replace(thing, parent=None))
     return state.evolve(objects=objects, held=thing.object_id), None
 
 
