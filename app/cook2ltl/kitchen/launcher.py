@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from ..errors import UserError
 from . import scenes
 
 THOR_EXECUTABLE_ENV = "COOK2LTL_THOR_EXECUTABLE"  # path to a THOR player binary
@@ -32,7 +33,7 @@ _RELEASE = re.compile(r"^thor-(Linux64|CloudRendering)-([0-9a-f]{40})$")
 _POISON = bytes([2, 0, 0, 0, 0])  # an ACTION header: a field the Controller never accepts, so it fails at once
 
 
-class KitchenUnavailable(RuntimeError):
+class KitchenUnavailable(UserError):
     """No kitchen could be started; the message says why, starting "THOR unavailable:"."""
 
     def __init__(self, reason: str) -> None:
