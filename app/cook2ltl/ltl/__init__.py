@@ -4,6 +4,9 @@ The core is plain functions over immutable, hash-consed formulas; only the
 parser needs a library (lark). Semantics are stated in :mod:`.progress`.
 """
 
+from cook2ltl.ltl import automaton as _automaton
+from cook2ltl.ltl import progress as _progress
+from cook2ltl.ltl import simplify as _simplify
 from cook2ltl.ltl.ast import (
     FALSE,
     TRUE,
@@ -30,8 +33,25 @@ from cook2ltl.ltl.progress import StepResult, Verdict, holds, monitor, progress,
 from cook2ltl.ltl.simplify import simplify
 
 __all__ = [
-    "FALSE", "TRUE", "Always", "And", "Atom", "Equiv", "Eventually", "Formula", "Implies",
+    "clear_caches", "FALSE", "TRUE", "Always", "And", "Atom", "Equiv", "Eventually", "Formula", "Implies",
     "LTLSyntaxError", "Next", "Not", "Or", "Release", "StepResult", "StrongRelease", "Until",
     "Verdict", "WeakNext", "WeakUntil", "holds", "holds_at_end", "monitor", "parse", "progress",
     "simplify", "to_spot", "to_unicode", "verdict",
 ]  # fmt: skip
+
+
+def clear_caches() -> None:
+    """Empty the memo tables of progression, simplification and the DFA.
+
+    They keep the formulas they saw alive; a long session may drop them, and
+    a benchmark must, to time a cold start.
+    """
+    for cached in (
+        holds_at_end,
+        _progress._progress,
+        _simplify.implies,
+        _simplify.promised_atoms,
+        _simplify.simplify,
+        _automaton.normal_form,
+    ):
+        cached.cache_clear()

@@ -43,11 +43,38 @@ NONEMPTY = Eventually(TRUE)  # "the trace goes on": false only on the empty rest
 EMPTY = Always(FALSE)  # "the trace has ended": true only on the empty rest
 
 
+@lru_cache(maxsize=1 << 16)
+def promised_atoms(f: Formula) -> frozenset[Atom] | None:
+    """Atoms that every model of ``f`` (the empty trace included) makes true at
+    some step; ``None`` for ``⊥``, which has no model. An under-approximation."""
+    match f:
+        case Constant(value=v):
+            return frozenset() if v else None
+        case Atom():
+            return frozenset((f,))
+        case And(args=args):
+            parts = [promised_atoms(a) for a in args]
+            return None if None in parts else frozenset().union(*parts)
+        case Or(args=args):
+            parts = [p for p in map(promised_atoms, args) if p is not None]
+            return frozenset.intersection(*parts) if parts else None
+        case Next(arg=a) | Eventually(arg=a) | Until(right=a):
+            return promised_atoms(a)
+        case StrongRelease(left=a, right=b):
+            return promised_atoms(And(a, b))
+    return frozenset()  # weak operators hold on the empty trace; ¬ → ↔ unexamined
+
+
 @lru_cache(maxsize=1 << 18)
 def implies(x: Formula, y: Formula) -> bool:
     """A cheap, sound and incomplete test of ``x ⇒ y`` on possibly empty traces."""
     if x is y or x is FALSE or y is TRUE:
         return True
+    # Every rule below keeps promised(x) ⊇ promised(y); checking it first
+    # spares a walk down a long recipe for implications that cannot hold.
+    px, py = promised_atoms(x), promised_atoms(y)
+    if py is None or (px is not None and not py <= px):
+        return False
     if isinstance(y, And):
         return all(implies(x, c) for c in y.args)
     if isinstance(x, Or):
