@@ -40,7 +40,7 @@ $(VENV)/.created:
 $(VENV)/.installed: $(VENV)/.created pyproject.toml
 	@echo "==> [2/4] packages (torch CPU, llama-cpp-python build, the project)"
 	$(BIN)/python -m pip install --progress-bar off torch==2.13.0
-	$(BIN)/python -m pip install --progress-bar off -e ".[models,llm,dev]"
+	$(BIN)/python -m pip install --progress-bar off -e ".[models,llm,sim,dev]"
 	@touch $@
 
 clean-venv:

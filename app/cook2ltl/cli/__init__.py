@@ -1,4 +1,4 @@
-"""The headless command line: `cook2ltl parse | models | doctor`."""
+"""The headless command line: `cook2ltl parse | ltl | models | doctor`."""
 
 from __future__ import annotations
 
@@ -10,11 +10,13 @@ from rich.console import Console
 from cook2ltl.cli.models_command import models_app
 from cook2ltl.cli.parse_command import parse_command
 from cook2ltl.errors import UserError
+from cook2ltl.ltl.cli import ltl_app
 
 app = typer.Typer(help="Cooking recipes to LTL task specifications, offline.", no_args_is_help=True,
                   pretty_exceptions_enable=False)
 app.command("parse")(parse_command)
 app.add_typer(models_app, name="models")
+app.add_typer(ltl_app, name="ltl")
 
 
 @app.command("doctor")
