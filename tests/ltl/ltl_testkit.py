@@ -100,18 +100,14 @@ def sat(f: Formula, trace, i: int = 0) -> bool:
         case WeakUntil(left=a, right=b):
             return _until(a, b, trace, i) or all(sat(a, trace, j) for j in range(i, n))
         case Release(left=a, right=b):
-            return all(
-                sat(b, trace, j) or any(sat(a, trace, k) for k in range(i, j)) for j in range(i, n)
-            )
+            return all(sat(b, trace, j) or any(sat(a, trace, k) for k in range(i, j)) for j in range(i, n))
         case StrongRelease(left=a, right=b):
             return _until(b, And(a, b), trace, i)
     raise TypeError(f)
 
 
 def _until(a, b, trace, i):
-    return any(
-        sat(b, trace, j) and all(sat(a, trace, k) for k in range(i, j)) for j in range(i, len(trace))
-    )
+    return any(sat(b, trace, j) and all(sat(a, trace, k) for k in range(i, j)) for j in range(i, len(trace)))
 
 
 # --- hypothesis strategies (for round trips and properties) ----------------
@@ -224,7 +220,7 @@ class MonaDFA:
     def successor(self, state: int, true_names: set[str]) -> int:
         bits = ["1" if v.lower() in true_names else "0" for v in self.variables]
         for guard, target in self.edges[state]:
-            if all(g in ("X", b) for g, b in zip(guard, bits)):
+            if all(g in ("X", b) for g, b in zip(guard, bits, strict=True)):
                 return target
         raise AssertionError(f"MONA DFA has no edge from {state} on {bits}")
 

@@ -80,8 +80,10 @@ def test_satisfiability():
     assert not is_satisfiable(parse("G a & F !a"), powerset_alphabet([Atom("a")]))
     assert not is_satisfiable(parse("X[!] false"))
     assert is_satisfiable(parse("X false"))  # a one-step trace
-    assert is_satisfiable(parse("F(cold(apple) & open(fridge))"), action_alphabet(
-        parse("cold(apple) & open(fridge)").atoms, predicates={"cold"}))
+    assert is_satisfiable(
+        parse("F(cold(apple) & open(fridge))"),
+        action_alphabet(parse("cold(apple) & open(fridge)").atoms, predicates={"cold"}),
+    )
 
 
 def test_thirty_action_sequence():

@@ -5,6 +5,7 @@ import json
 import typer
 from typer.testing import CliRunner
 
+from cook2ltl.errors import UserError
 from cook2ltl.ltl.cli import ltl_app
 
 # Mounted as in the main CLI, so the commands are tried as `cook2ltl ltl …`.
@@ -36,9 +37,11 @@ def test_parse_json():
 
 
 def test_parse_error_shows_position():
-    result = run("parse", "F(a &")
-    assert result.exit_code == 2
-    assert "line 1, column 6" in result.stderr
+    # UserError reaches the main CLI, which prints it and exits with 2.
+    error = run("parse", "F(a &").exception
+    assert isinstance(error, UserError)
+    assert "line 1, column 6" in error.message
+    assert "F(a &\n       ^" in error.message
 
 
 def test_progress_table():
@@ -79,6 +82,7 @@ def test_progress_without_steps_judges_the_empty_trace():
 
 
 def test_progress_rejects_a_step_that_is_not_atoms():
-    result = run("progress", "F a", "a & b")
-    assert result.exit_code == 2
-    assert "Step 1" in result.stderr
+    error = run("progress", "F a", "b", "a & b").exception
+    assert isinstance(error, UserError)
+    assert error.message == "step 2 is not a list of atoms: 'a & b' is not an atom"
+    assert isinstance(run("progress", "F a", "a(").exception, UserError)

@@ -42,9 +42,7 @@ def _cases(seed: int) -> Iterator[tuple]:
     for _ in range(FORMULAS):
         atoms = small_atoms(rng.randint(1, MAX_ATOMS))
         f = random_formula(rng, atoms, rng.randint(1, MAX_SIZE))
-        traces = [
-            random_trace(rng, atoms, rng.randint(1, MAX_TRACE)) for _ in range(TRACES_PER_FORMULA)
-        ]
+        traces = [random_trace(rng, atoms, rng.randint(1, MAX_TRACE)) for _ in range(TRACES_PER_FORMULA)]
         yield f, atoms, traces
 
 
@@ -86,7 +84,7 @@ def test_progression_and_dfa_agree_with_mona():
         for trace in traces:
             pairs += 1
             for k, (result, (accepted, state)) in enumerate(
-                zip(monitor(f, trace), mona.prefix_acceptance(trace, names)), start=1
+                zip(monitor(f, trace), mona.prefix_acceptance(trace, names), strict=True), start=1
             ):
                 future = mona.reaches(state)
                 expected_final = {

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import pytest
 
-from cook2ltl.ltl.ast import Atom
+from cook2ltl.ltl.ast import Atom, postorder
 from cook2ltl.ltl.atoms import AtomKind, atom_kind, check_against, check_atoms, split_atoms
 from cook2ltl.ltl.parser import parse
 from cook2ltl.ltl.patterns import (
@@ -15,7 +15,9 @@ from cook2ltl.ltl.patterns import (
     sequenced_visit,
     then,
 )
-from cook2ltl.ltl.progress import Verdict, holds, monitor
+from cook2ltl.ltl.printer import to_spot, to_unicode
+from cook2ltl.ltl.progress import Verdict, holds, monitor, progress_trace
+from cook2ltl.ltl.simplify import simplify
 
 a, b, c, d = (Atom(n) for n in "abcd")
 stir, thickened = Atom("stir"), Atom("thickened")
@@ -73,6 +75,27 @@ def test_sub_sequences_splice():
     assert sequenced_visit(a, plan, b) is sequenced_visit(a, *plan.parts, b)
     with pytest.raises(TypeError):
         sequenced_visit("a")
+
+
+def test_long_recipes_nest_deeper_than_python_recursion_allows():
+    actions = [Atom("do", (str(i),)) for i in range(600)]
+    f = sequenced_visit(*actions[:300], avoid(Atom("burnt")), all_of(a, b), *actions[300:])
+    assert parse(to_spot(f)) is f and parse(to_unicode(f)) is f
+    assert simplify(f) is f
+    steps = [{x} for x in actions[:300]] + [{b}, {a}] + [{x} for x in actions[300:]]
+    assert list(monitor(f, steps))[-1].verdict is Verdict.SATISFIED
+
+
+def test_all_of_in_a_row_shares_the_rest_of_the_sequence():
+    # 40 pairs: the formula's text would repeat the rest 2^40 times, but the
+    # hash-consed AST shares it, and monitoring works on the shared nodes.
+    pairs = [(Atom("add", (f"x{i}",)), Atom("add", (f"y{i}",))) for i in range(40)]
+    f = sequenced_visit(*(all_of(x, y) for x, y in pairs))
+    assert f.size > 2**40
+    assert sum(1 for _ in postorder(f)) < 400
+    steps = [{step} for x, y in pairs for step in (y, x)]
+    assert list(monitor(f, steps))[-1].verdict is Verdict.SATISFIED
+    assert str(progress_trace(f, steps[:-2])) == "◇add(x39) ∧ ◇add(y39)"
 
 
 PRIMITIVES = {"pick_up": 1, "slice": 2, "put": 2, "cold": 1}

@@ -4,7 +4,6 @@ import pickle
 
 import pytest
 from hypothesis import given, settings
-from tests.ltl.ltl_testkit import formulas_strategy
 
 from cook2ltl.ltl.ast import (
     FALSE,
@@ -26,6 +25,7 @@ from cook2ltl.ltl.ast import (
 )
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
+from tests.ltl.ltl_testkit import formulas_strategy
 
 a, b, c = Atom("a"), Atom("b"), Atom("c")
 knife = Atom("pick_up", ("knife",))

@@ -47,10 +47,8 @@ def clear_caches() -> None:
     a benchmark must, to time a cold start.
     """
     for cached in (
-        holds_at_end,
         _progress._progress,
         _simplify.implies,
-        _simplify.promised_atoms,
         _simplify.simplify,
         _automaton.normal_form,
     ):

@@ -19,7 +19,7 @@ strong release, ``W`` the weak until.
 from __future__ import annotations
 
 import weakref
-from functools import lru_cache
+from collections.abc import Iterator
 from dataclasses import dataclass, fields
 from typing import ClassVar
 
@@ -30,12 +30,13 @@ _FORBIDDEN_IN_NAMES = frozenset('()",')
 class Formula:
     """Base class of all formula nodes (never instantiated itself)."""
 
-    __slots__ = ()
     rank: ClassVar[int]
-    # Set by ``_intern``: a structural sort key, the atoms and the node count.
-    key: tuple
-    atoms: frozenset
-    size: int
+    # Set once by ``_intern``, from the children's (so never by recursion):
+    key: tuple  # structural sort key of the canonical form
+    atoms: frozenset  # the atoms in the formula
+    size: int  # number of nodes
+    end_ok: bool  # see holds_at_end()
+    promised: frozenset | None  # atoms every model makes true at some step; None: no model
 
     def __str__(self) -> str:
         from cook2ltl.ltl.printer import to_unicode
@@ -60,8 +61,6 @@ class Formula:
 
 
 def _rebuild(cls, args):
-    if cls is And or cls is Or:
-        return cls(*args[0])
     return cls(*args)
 
 
@@ -71,14 +70,50 @@ def _intern(cls, values: tuple, key_tail: tuple, children: tuple) -> Formula:
     if node is not None:
         return node
     node = object.__new__(cls)
-    for field, value in zip(fields(cls), values):
+    for field, value in zip(fields(cls), values, strict=True):
         object.__setattr__(node, field.name, value)
     object.__setattr__(node, "key", (cls.rank, *key_tail))
     atoms = frozenset().union(*(c.atoms for c in children)) if children else frozenset()
     object.__setattr__(node, "atoms", atoms)
     object.__setattr__(node, "size", 1 + sum(c.size for c in children))
+    end_ok, promised = _facts(node)
+    object.__setattr__(node, "end_ok", end_ok)
+    object.__setattr__(node, "promised", promised)
     _INTERNED[lookup] = node
     return node
+
+
+def _facts(f: Formula) -> tuple[bool, frozenset | None]:
+    """(holds_at_end(f), promised atoms), from the children's.
+
+    Classes are matched by name at call time, so this may come before them.
+    """
+    match f:
+        case Constant(value=v):
+            return v, (frozenset() if v else None)
+        case Atom():
+            return False, frozenset((f,))
+        case Not(arg=a):
+            return not a.end_ok, frozenset()
+        case And(args=args):
+            promised = [a.promised for a in args]
+            union = None if None in promised else frozenset().union(*promised)
+            return all(a.end_ok for a in args), union
+        case Or(args=args):
+            promised = [a.promised for a in args if a.promised is not None]
+            common = frozenset.intersection(*promised) if promised else None
+            return any(a.end_ok for a in args), common
+        case Next(arg=a) | Eventually(arg=a) | Until(right=a):
+            return False, a.promised
+        case StrongRelease(left=a, right=b):
+            return False, (None if None in (a.promised, b.promised) else a.promised | b.promised)
+        case WeakNext() | Always() | Release() | WeakUntil():
+            return True, frozenset()
+        case Implies(left=a, right=b):
+            return (not a.end_ok) or b.end_ok, frozenset()
+        case Equiv(left=a, right=b):
+            return a.end_ok == b.end_ok, frozenset()
+    raise TypeError(f"not a formula: {f!r}")
 
 
 @dataclass(frozen=True, eq=False, init=False, repr=False)
@@ -111,7 +146,7 @@ class Atom(Formula):
             if not isinstance(part, str) or not part or part != part.strip():
                 raise ValueError(f"bad atom part {part!r}: empty or padded with spaces")
             if _FORBIDDEN_IN_NAMES & set(part):
-                raise ValueError(f"bad atom part {part!r}: contains one of ( ) \" ,")
+                raise ValueError(f'bad atom part {part!r}: contains one of ( ) " ,')
         node = _intern(cls, (name, args), (name, args), ())
         if not node.atoms:
             object.__setattr__(node, "atoms", frozenset((node,)))
@@ -221,10 +256,6 @@ class _NAry(Formula):
         return _intern(cls, (ordered,), (tuple(f.key for f in ordered),), ordered)
 
     def constructor_args(self) -> tuple:
-        return (self.args,)
-
-    @property
-    def children(self) -> tuple[Formula, ...]:
         return self.args
 
 
@@ -246,10 +277,6 @@ class Implies(_Binary):
 
 class Equiv(_Binary):
     rank = 14
-
-
-UNARY_TEMPORAL = (Next, WeakNext, Eventually, Always)
-BINARY_TEMPORAL = (Until, Release, WeakUntil, StrongRelease)
 
 
 def negate(f: Formula) -> Formula:
@@ -290,32 +317,31 @@ def negate(f: Formula) -> Formula:
     raise TypeError(f"not a formula: {f!r}")
 
 
-@lru_cache(maxsize=1 << 16)
 def holds_at_end(f: Formula) -> bool:
     """Does ``f`` hold on the empty rest of a trace, i.e. if the trace ended here?
 
     A remaining obligation is read over the rest of the trace, which may be
-    empty. Then atoms and negated atoms are both false (there is no step to
-    look at), strong operators (``X[!] F U M``) are false and weak ones
-    (``X G R W``) true.
+    empty. There nothing happens: atoms are false, the strong operators
+    ``X[!] F U M`` are false, the weak ones ``X G R W`` true, and the Boolean
+    connectives are the usual ones.
     """
-    match f:
-        case Constant(value=v):
-            return v
-        case Atom() | Next() | Eventually() | Until() | StrongRelease():
-            return False
-        case WeakNext() | Always() | Release() | WeakUntil():
-            return True
-        case Not(arg=Atom()):
-            return False
-        case Not(arg=inner):
-            return holds_at_end(negate(inner))
-        case And(args=args):
-            return all(holds_at_end(a) for a in args)
-        case Or(args=args):
-            return any(holds_at_end(a) for a in args)
-        case Implies(left=a, right=b):
-            return holds_at_end(Not(a)) or holds_at_end(b)
-        case Equiv(left=a, right=b):
-            return holds_at_end(Or(And(a, b), And(Not(a), Not(b))))
-    raise TypeError(f"not a formula: {f!r}")
+    return f.end_ok
+
+
+def postorder(root: Formula) -> Iterator[Formula]:
+    """Each distinct subformula once, children first; a loop, since a long
+    recipe nests deeper than Python's recursion limit."""
+    done: set[Formula] = set()
+    stack = [root]
+    while stack:
+        node = stack[-1]
+        if node in done:
+            stack.pop()
+            continue
+        pending = [c for c in node.children if c not in done]
+        if pending:
+            stack.extend(pending)
+        else:
+            stack.pop()
+            done.add(node)
+            yield node

@@ -157,9 +157,7 @@ def minimise(dfa: DFA) -> DFA:
     states = tuple(
         min((dfa.states[s] for s in ms), key=lambda f: (f.size, f.key)) for _, ms in sorted(members.items())
     )
-    delta = tuple(
-        tuple(order[block[t]] for t in dfa.delta[ms[0]]) for _, ms in sorted(members.items())
-    )
+    delta = tuple(tuple(order[block[t]] for t in dfa.delta[ms[0]]) for _, ms in sorted(members.items()))
     accepting = frozenset(order[block[s]] for s in dfa.accepting)
     return DFA(dfa.alphabet, states, order[block[dfa.initial]], accepting, delta)
 

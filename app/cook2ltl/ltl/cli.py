@@ -16,6 +16,7 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
+from cook2ltl.errors import UserError
 from cook2ltl.ltl.ast import Atom, Formula
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
@@ -36,16 +37,17 @@ _VERDICT_STYLE = {
 JsonOption = Annotated[bool, typer.Option("--json", help="Print plain JSON to stdout.")]
 
 
-def _fail(message: str) -> typer.Exit:
-    Console(stderr=True).print(Text(message, style="red"))
-    return typer.Exit(code=2)
+_SYNTAX_HINT = (
+    "write F G X X[!] U R W M ! & | -> <-> (or ◇ □ ○ 𝒰 ∧ ∨ ¬ →), "
+    'atoms as pick_up(knife) or "slice(tomato, knife)"'
+)
 
 
 def _read_formula(text: str) -> Formula:
     try:
         return parse(text)
     except LTLSyntaxError as err:
-        raise _fail(f"Not a formula: {err}") from None
+        raise UserError(f"not a formula: {err}", _SYNTAX_HINT) from None
 
 
 def read_step(text: str) -> frozenset[Atom]:
@@ -104,8 +106,11 @@ def progress_command(
     for number, text in enumerate(steps or [], start=1):
         try:
             trace.append(read_step(text))
-        except (LTLSyntaxError, ValueError) as err:
-            raise _fail(f"Step {number} is not a list of atoms: {err}") from None
+        except ValueError as err:  # LTLSyntaxError is a ValueError
+            raise UserError(
+                f"step {number} is not a list of atoms: {err}",
+                "separate the atoms true in a step with ';', or write '-' for none",
+            ) from None
     results = list(monitor(f, trace))
     final = results[-1].verdict if results else verdict(f)
     if as_json:

@@ -11,17 +11,17 @@ from functools import lru_cache
 from importlib import resources
 
 from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from cook2ltl.ltl.ast import (
     FALSE,
     TRUE,
+    Always,
     And,
     Atom,
     Equiv,
     Eventually,
     Formula,
-    Always,
     Implies,
     Next,
     Not,
@@ -145,7 +145,9 @@ class _Build(Transformer):
 @lru_cache(maxsize=1)
 def _lark() -> Lark:
     grammar = resources.files("cook2ltl.ltl").joinpath("grammar.lark").read_text("utf-8")
-    return Lark(grammar, parser="lalr", lexer="contextual", propagate_positions=False)
+    # The transformer runs inside the LALR parse, as each rule is reduced: no
+    # tree walk afterwards, so no recursion however deep the formula nests.
+    return Lark(grammar, parser="lalr", lexer="contextual", transformer=_Build())
 
 
 def _describe(expected: set[str]) -> str:
@@ -156,7 +158,9 @@ def _describe(expected: set[str]) -> str:
 def parse(text: str) -> Formula:
     """Parse one formula; raise :class:`LTLSyntaxError` if it is not well formed."""
     try:
-        tree = _lark().parse(text)
+        return _lark().parse(text)
+    except _Bad as err:
+        raise LTLSyntaxError(str(err), text, err.token.line, err.token.column) from None
     except UnexpectedEOF as err:
         raise LTLSyntaxError(
             f"formula ends too early; expected {_describe(set(err.expected))}",
@@ -176,13 +180,6 @@ def parse(text: str) -> Formula:
         raise LTLSyntaxError(
             f"unexpected {found}; expected {_describe(set(expected))}", text, line, column
         ) from None
-    try:
-        return _Build().transform(tree)
-    except VisitError as err:
-        cause = err.orig_exc
-        if isinstance(cause, _Bad):
-            raise LTLSyntaxError(str(cause), text, cause.token.line, cause.token.column) from None
-        raise
 
 
 def _end_position(text: str) -> tuple[int, int]:

@@ -21,10 +21,16 @@ by that action unless ``thickened`` already holds. Inside, as
 
 Like the paper's pattern, a visit does not need a step of its own: visiting
 the same action twice in a row is met by a single occurrence.
+
+``all_of`` and ``any_of`` repeat the rest of the sequence after each part
+(LTL has no past operators to say "both have happened" otherwise). The
+hash-consed AST shares the repeats, so building, progressing and the DFA stay
+linear, but the *printed* formula doubles with each such element in a row.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from cook2ltl.ltl.ast import TRUE, Always, And, Eventually, Formula, Not, Or, Until
@@ -81,30 +87,47 @@ def then(*parts: Element) -> Then:
 
 def sequenced_visit(*elements: Element) -> Formula:
     """``◇(ψ1 ∧ ◇(ψ2 ∧ … ◇ψn))`` for the elements ψ1 … ψn (combinators expanded)."""
-    return _visit(elements, TRUE)
+    return _chain(elements, _finish)(TRUE)
 
 
-def _visit(elements: tuple[Element, ...], guard: Formula) -> Formula:
-    """What must hold from the current step: the elements in order, and
-    ``guard`` at every step until the first of them is visited."""
-    if not elements:
-        return TRUE if guard is TRUE else Always(guard)
-    first, rest = elements[0], elements[1:]
-    match first:
+# The sequence is built right to left as continuations: ``k(guard)`` is what
+# must hold from the current step for the remaining elements to be visited,
+# with ``guard`` true at every step until the first of them is. Each element
+# computes ``k(TRUE)`` of what follows it once, when it is built, so the
+# work is linear and nothing recurses down a long recipe.
+Continuation = Callable[[Formula], Formula]
+
+
+def _finish(guard: Formula) -> Formula:
+    return TRUE if guard is TRUE else Always(guard)
+
+
+def _chain(elements: tuple[Element, ...], k: Continuation) -> Continuation:
+    for element in reversed(elements):
+        k = _element(element, k)
+    return k
+
+
+def _element(element: Element, k: Continuation) -> Continuation:
+    match element:
         case Then(parts=parts):
-            return _visit(parts + rest, guard)
+            return _chain(parts, k)
         case Avoid(formula=f):
-            return _visit(rest, And(guard, Not(f)))
+            return lambda guard: k(And(guard, Not(f)))
         case AllOf(parts=parts):
             # Each part followed by the rest: the rest then comes after all parts.
-            return And(*(_visit((p, *rest), guard) for p in parts))
+            branches = [_chain((p,), k) for p in parts]
+            return lambda guard: And(*(b(guard) for b in branches))
         case AnyOf(parts=parts):
-            return Or(*(_visit((p, *rest), guard) for p in parts))
+            branches = [_chain((p,), k) for p in parts]
+            return lambda guard: Or(*(b(guard) for b in branches))
         case HoldUntil(hold=hold, goal=goal):
-            return _reach(Until(hold, And(goal, _visit(rest, TRUE))), guard)
+            target = Until(hold, And(goal, k(TRUE)))
+            return lambda guard: _reach(target, guard)
         case Formula():
-            return _reach(And(first, _visit(rest, TRUE)), guard)
-    raise TypeError(f"not a sequence element: {first!r}")
+            target = And(element, k(TRUE))
+            return lambda guard: _reach(target, guard)
+    raise TypeError(f"not a sequence element: {element!r}")
 
 
 def _reach(target: Formula, guard: Formula) -> Formula:

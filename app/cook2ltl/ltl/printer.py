@@ -11,22 +11,23 @@ import re
 from dataclasses import dataclass
 
 from cook2ltl.ltl.ast import (
+    Always,
     And,
     Atom,
     Constant,
     Equiv,
+    Eventually,
     Formula,
     Implies,
+    Next,
     Not,
     Or,
-    Always,
-    Eventually,
-    Next,
     Release,
     StrongRelease,
     Until,
     WeakNext,
     WeakUntil,
+    postorder,
 )
 
 _NAME = re.compile(r"[a-z_][A-Za-z0-9_]*\Z")
@@ -91,7 +92,15 @@ def _is_atomic(f: Formula) -> bool:
     return isinstance(f, (Atom, Constant))
 
 
-def _print(f: Formula, style: _Style) -> str:
+def _print(root: Formula, style: _Style) -> str:
+    text: dict[Formula, str] = {}
+    for f in postorder(root):
+        text[f] = _render(f, style, text)
+    return text[root]
+
+
+def _render(f: Formula, style: _Style, text: dict[Formula, str]) -> str:
+    """One node, its children's text already in ``text``."""
     match f:
         case Constant(value=v):
             return style.true if v else style.false
@@ -100,24 +109,21 @@ def _print(f: Formula, style: _Style) -> str:
         case Not() | Next() | WeakNext() | Eventually() | Always():
             # Prefix operators bind tightest: only an operand that is itself
             # prefix or atomic goes without parentheses.
-            inner = _print(f.arg, style)
+            inner = text[f.arg]
             if not (_is_atomic(f.arg) or type(f.arg) in style.prefix):
                 inner = f"({inner})"
             return style.prefix[type(f)] + inner
         case And(args=args) | Or(args=args):
-            return style.infix[type(f)].join(_operand(a, style) for a in args)
-        case _:
-            op = style.infix[type(f)]
-            return _operand(f.left, style) + op + _operand(f.right, style)
+            return style.infix[type(f)].join(_operand(a, text, style) for a in args)
+    return _operand(f.left, text, style) + style.infix[type(f)] + _operand(f.right, text, style)
 
 
-def _operand(f: Formula, style: _Style) -> str:
+def _operand(f: Formula, text: dict[Formula, str], style: _Style) -> str:
     """An operand of an infix operator: parenthesised unless atomic or prefix.
 
     Spot's precedences would allow fewer parentheses, but ``a ∧ b ∨ c`` or
     ``a 𝒰 b 𝒰 c`` make a reader stop and think; the parentheses are cheap.
     """
-    text = _print(f, style)
     if _is_atomic(f) or type(f) in style.prefix:
-        return text
-    return f"({text})"
+        return text[f]
+    return f"({text[f]})"

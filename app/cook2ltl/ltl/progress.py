@@ -15,7 +15,9 @@ Semantics (finite traces, LTLf), stated once for the whole package:
 * ``F U M`` are strong (need a step where their goal holds), ``G R W`` weak.
 * A trace of n steps satisfies ``f`` iff ``holds_at_end`` of ``f`` progressed
   through its n steps is true, and this is exactly the LTLf semantics for
-  n ≥ 1. For n = 0 (no step yet) it is the natural reading on an empty trace.
+  n ≥ 1. For n = 0 (no step yet) it reads the formula on the empty trace,
+  where nothing happens: atoms false, strong operators false, weak ones
+  true, ``¬ ∧ ∨`` as usual.
 
 Progressing a strong next ``X[!]ψ`` yields ``ψ`` — or ``ψ ∧ ◇⊤`` ("and the
 trace goes on") when ``ψ`` alone would accept the trace ending there; the weak

@@ -8,9 +8,9 @@ rewritten equivalent.
 
 Every rule is sound on *possibly empty* traces, because remaining obligations
 are read over the rest of a trace, which is empty once the trace ends (see
-:func:`cook2ltl.ltl.ast.holds_at_end`). That rules out some classical
-identities: ``a ∨ ¬a`` is not ``⊤`` (both need a step) and ``◇⊤`` is not
-``⊤`` (it says "the trace goes on"), so neither is rewritten.
+:func:`cook2ltl.ltl.ast.holds_at_end`). That rules out identities that only
+hold on non-empty traces: ``◇⊤`` is not ``⊤`` (it says "the trace goes
+on"), nor is ``□⊥`` the same as ``⊥`` (it says "the trace has ended").
 """
 
 from __future__ import annotations
@@ -37,32 +37,11 @@ from cook2ltl.ltl.ast import (
     WeakNext,
     WeakUntil,
     holds_at_end,
+    postorder,
 )
 
 NONEMPTY = Eventually(TRUE)  # "the trace goes on": false only on the empty rest
 EMPTY = Always(FALSE)  # "the trace has ended": true only on the empty rest
-
-
-@lru_cache(maxsize=1 << 16)
-def promised_atoms(f: Formula) -> frozenset[Atom] | None:
-    """Atoms that every model of ``f`` (the empty trace included) makes true at
-    some step; ``None`` for ``⊥``, which has no model. An under-approximation."""
-    match f:
-        case Constant(value=v):
-            return frozenset() if v else None
-        case Atom():
-            return frozenset((f,))
-        case And(args=args):
-            parts = [promised_atoms(a) for a in args]
-            return None if None in parts else frozenset().union(*parts)
-        case Or(args=args):
-            parts = [p for p in map(promised_atoms, args) if p is not None]
-            return frozenset.intersection(*parts) if parts else None
-        case Next(arg=a) | Eventually(arg=a) | Until(right=a):
-            return promised_atoms(a)
-        case StrongRelease(left=a, right=b):
-            return promised_atoms(And(a, b))
-    return frozenset()  # weak operators hold on the empty trace; ¬ → ↔ unexamined
 
 
 @lru_cache(maxsize=1 << 18)
@@ -70,9 +49,9 @@ def implies(x: Formula, y: Formula) -> bool:
     """A cheap, sound and incomplete test of ``x ⇒ y`` on possibly empty traces."""
     if x is y or x is FALSE or y is TRUE:
         return True
-    # Every rule below keeps promised(x) ⊇ promised(y); checking it first
-    # spares a walk down a long recipe for implications that cannot hold.
-    px, py = promised_atoms(x), promised_atoms(y)
+    # No rule below proves x ⇒ y unless x promises every atom y promises;
+    # checking that first spares a walk down a long recipe.
+    px, py = x.promised, y.promised
     if py is None or (px is not None and not py <= px):
         return False
     if isinstance(y, And):
@@ -109,7 +88,7 @@ def _same_operator_implies(x: Formula, y: Formula) -> bool:
     # All temporal operators are monotone in each operand.
     if (type(x), type(y)) not in _WEAKENINGS:
         return False
-    return all(implies(a, b) for a, b in zip(x.children, y.children))
+    return all(implies(a, b) for a, b in zip(x.children, y.children, strict=True))
 
 
 def and_(*operands: Formula) -> Formula:
@@ -130,10 +109,13 @@ def and_(*operands: Formula) -> Formula:
 
 
 def or_(*operands: Formula) -> Formula:
-    """Disjunction without operands that a weaker one already covers."""
+    """Disjunction without operands that a weaker one already covers; ``x ∨ ¬x`` is ``⊤``."""
     f = Or(*operands)
     if not isinstance(f, Or):
         return f
+    present = set(f.args)
+    if any(isinstance(a, Not) and a.arg in present for a in f.args):
+        return TRUE
     kept: list[Formula] = []
     for a in f.args:
         if any(implies(a, k) for k in kept):
@@ -167,30 +149,36 @@ def _or_empty(f: Formula) -> Formula:
 @lru_cache(maxsize=1 << 16)
 def simplify(f: Formula) -> Formula:
     """Fold constants, drop settled operands and merge ``◇◇``, ``□□``, bottom up."""
+    done: dict[Formula, Formula] = {}
+    for g in postorder(f):
+        done[g] = _simplify_node(g, [done[c] for c in g.children])
+    return done[f]
+
+
+def _simplify_node(f: Formula, kids: list[Formula]) -> Formula:
+    """One node, its children already simplified into ``kids``."""
     match f:
         case Constant() | Atom():
             return f
-        case Not(arg=a):
-            return Not(simplify(a))
-        case And(args=args):
-            return and_(*(simplify(a) for a in args))
-        case Or(args=args):
-            return or_(*(simplify(a) for a in args))
-        case Next(arg=a):
-            a = simplify(a)
-            return FALSE if a is FALSE else Next(a)
-        case WeakNext(arg=a):
-            a = simplify(a)
-            return TRUE if a is TRUE else WeakNext(a)
-        case Eventually(arg=a):
-            return eventually(simplify(a))
-        case Always(arg=a):
-            return always(simplify(a))
-        case Implies(left=a, right=b):
-            return _implies(simplify(a), simplify(b))
-        case Equiv(left=a, right=b):
-            return _equiv(simplify(a), simplify(b))
-    return _binary_temporal(type(f), simplify(f.left), simplify(f.right))
+        case Not():
+            return Not(kids[0])
+        case And():
+            return and_(*kids)
+        case Or():
+            return or_(*kids)
+        case Next():
+            return FALSE if kids[0] is FALSE else Next(kids[0])
+        case WeakNext():
+            return TRUE if kids[0] is TRUE else WeakNext(kids[0])
+        case Eventually():
+            return eventually(kids[0])
+        case Always():
+            return always(kids[0])
+        case Implies():
+            return _implies(*kids)
+        case Equiv():
+            return _equiv(*kids)
+    return _binary_temporal(type(f), *kids)
 
 
 def _implies(a: Formula, b: Formula) -> Formula:
