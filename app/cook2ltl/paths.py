@@ -42,3 +42,8 @@ def data_dir() -> Path:
 def shared_data_dir() -> Path:
     """The paper's annotated data, used for training and benchmarks (not needed at run time)."""
     return _env_path("COOK2LTL_SHARED_DATA", PROJECT_ROOT.parent / "shared" / "data")
+
+
+def library_file() -> Path:
+    """The action library 𝔸 (SQLite), shared by every run of every recipe."""
+    return _env_path("COOK2LTL_LIBRARY", data_dir() / "library.sqlite")

@@ -1,0 +1,216 @@
+"""Algorithm 1 of the paper: parsed steps → actions → reductions (primitive, library or model) → LTL.
+
+`translate` is a generator of progress events, so the command line draws a bar from it and a UI worker
+can forward them; a `threading.Event` stops it between two actions.
+
+Variants of the paper's ablation: AR* reduces every action with the model; AR passes the primitives
+through; AR+𝔸 (the default) also looks the action library up first and caches every new reduction.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass, replace
+from enum import StrEnum
+from typing import Iterator
+
+from cook2ltl.domain import ParsedRecipe, Step
+from cook2ltl.library.store import Library
+from cook2ltl.ltl.ast import Formula
+from cook2ltl.ltl.patterns import Element, sequenced_visit
+from cook2ltl.reduce.action import actions_of
+from cook2ltl.reduce.body import instantiate, parametrize, placeholders
+from cook2ltl.reduce.llm import LanguageModel
+from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
+from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, reduce_action
+from cook2ltl.translate.formula import (
+    ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
+)
+
+
+class Variant(StrEnum):
+    AR_STAR = "AR*"
+    AR = "AR"
+    AR_LIBRARY = "AR+A"
+
+
+@dataclass(frozen=True)
+class Translator:
+    primitives: PrimitiveSet
+    model: LanguageModel
+    library: Library | None = None  # needed by AR+𝔸 only
+    variant: Variant = Variant.AR_LIBRARY
+    settings: ReductionSettings = ReductionSettings()
+
+
+@dataclass(frozen=True)
+class ActionResult:
+    frame_index: int
+    reduction: Reduction  # the body as found or written, library verbs included
+    plan: tuple[Call, ...]  # the same down to primitives; empty when there is no admissible plan
+
+
+@dataclass(frozen=True)
+class StepResult:
+    step: Step
+    actions: tuple[ActionResult, ...]
+    formula: Formula
+    problems: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Stats:
+    actions: int = 0
+    primitive: int = 0
+    library_hits: int = 0
+    llm_calls: int = 0
+    prompt_tokens: int = 0
+    completion_tokens: int = 0
+    llm_seconds: float = 0.0
+    dropped_lines: int = 0
+    new_entries: int = 0
+    seconds: float = 0.0
+
+
+@dataclass(frozen=True)
+class Translation:
+    primitives: str
+    variant: Variant
+    model: str
+    steps: tuple[StepResult, ...]
+    formula: Formula  # every step in sequence
+    stats: Stats
+
+
+@dataclass(frozen=True)
+class Started:
+    steps: int
+    actions: int
+
+
+@dataclass(frozen=True)
+class ActionDone:
+    step_index: int
+    result: ActionResult
+    done: int  # actions finished so far
+
+
+@dataclass(frozen=True)
+class StepDone:
+    result: StepResult
+
+
+@dataclass(frozen=True)
+class Finished:
+    translation: Translation
+
+
+Event = Started | ActionDone | StepDone | Finished
+
+
+def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Event | None = None) -> Iterator[Event]:
+    started = time.perf_counter()
+    run = _Run(translator)
+    total = sum(len(actions_of(frame)) for step in parsed.steps for frame in step.frames)
+    yield Started(len(parsed.steps), total)
+    steps, elements, done = [], [], 0
+    for step in parsed.steps:
+        results, parts = [], []
+        for frame_index, frame in enumerate(step.frames):
+            options = []
+            for action in actions_of(frame):
+                if cancel is not None and cancel.is_set():
+                    return
+                result, element = run.action(frame_index, action)
+                results.append(result)
+                done += 1
+                yield ActionDone(step.index, result, done)
+                if element is not None:
+                    options.append(element)
+            parts.append(Part(alternatives(options), frame.negated) if options else None)
+        element = step_element(parts, step.links)
+        formula = sequenced_visit(element)
+        problems = run.problems(results, formula)
+        elements.append(element)
+        steps.append(StepResult(step, tuple(results), formula, problems))
+        yield StepDone(steps[-1])
+    stats = replace(run.stats, seconds=time.perf_counter() - started)
+    yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
+                               tuple(steps), sequenced_visit(*elements), stats))
+
+
+class _Run:
+    """The state of one translation: the library's live verbs and the running counts."""
+
+    def __init__(self, translator: Translator) -> None:
+        self.t = translator
+        self.stats = Stats()
+        self.uses_library = translator.variant == Variant.AR_LIBRARY
+        if self.uses_library and translator.library is None:
+            raise ValueError("the AR+A variant needs a library")
+        self.verbs: list[LibraryVerb] = []
+        self._refresh()
+
+    def action(self, frame_index: int, action: Action) -> tuple[ActionResult, Element | None]:
+        primitives = self.t.primitives
+        self._count(actions=1)
+        primitive = primitives.get(action.verb)
+        if primitive is not None and self.t.variant != Variant.AR_STAR:
+            calls = direct_calls(action, primitive)
+            if calls is not None:
+                self._count(primitive=1)
+                result = ActionResult(frame_index, Reduction(action, calls, Source.PRIMITIVE), calls)
+                return result, direct_element(action, calls, primitives)
+        stale = None
+        if self.uses_library:
+            entry = self.t.library.lookup(primitives.name, action.verb, action.signature)
+            body = instantiate(entry.body, placeholders(action)) if entry else None
+            plan = self._expand(body) if body is not None else None
+            if plan:
+                self._count(library_hits=1)
+                reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
+                return ActionResult(frame_index, reduction, plan), plan_element(plan, primitives)
+            stale = entry.id if entry else None  # written for another version of the primitive set
+        reduction = reduce_action(action, primitives, self.verbs, self.t.model, self.t.settings)
+        usage = reduction.usage
+        self._count(llm_calls=1, prompt_tokens=usage.prompt_tokens, completion_tokens=usage.completion_tokens,
+                    llm_seconds=usage.seconds, dropped_lines=len(reduction.dropped))
+        plan = self._expand(reduction.body) or ()
+        if plan and self.uses_library:
+            entry = self.t.library.add(primitives.name, action.verb, action.signature,
+                                       parametrize(reduction.body, action), self.t.model.name,
+                                       reduction.prompt_hash, replacing=stale)
+            reduction = replace(reduction, entry_id=entry.id)
+            self._count(new_entries=1)
+            self._refresh()
+        return ActionResult(frame_index, reduction, plan), plan_element(plan, primitives) if plan else None
+
+    def problems(self, results: list[ActionResult], formula: Formula) -> tuple[str, ...]:
+        found = [f"no admissible plan for {r.reduction.action.text()}" for r in results if not r.plan]
+        predicates = {state: 1 for state in self.t.primitives.states} | {ELAPSED: 1}
+        predicates |= {value: 1 for r in results for value in r.reduction.action.values}
+        predicates |= {c.args[1]: 1 for r in results for c in r.plan if c.is_wait}
+        found += [problem.message for problem in check(formula, self.t.primitives, predicates)]
+        return tuple(found)
+
+    def _expand(self, body: tuple[Call, ...] | None) -> tuple[Call, ...] | None:
+        if body is None:
+            return None
+        plan = expand(body, self.t.primitives, self._find)
+        return plan if plan is not None and all(self._fits(call) for call in plan) else None
+
+    def _fits(self, call: Call) -> bool:
+        primitive = self.t.primitives.get(call.name)
+        return primitive is not None and len(call.args) == (2 if call.is_wait else primitive.object_arity)
+
+    def _find(self, verb: str, arity: int) -> LibraryVerb | None:
+        return next((v for v in self.verbs if v.verb == verb and len(v.signature) == arity), None)
+
+    def _refresh(self) -> None:
+        if self.uses_library:
+            entries = self.t.library.live(self.t.primitives.name)
+            self.verbs = [LibraryVerb(e.verb, e.signature, e.body) for e in entries]
+
+    def _count(self, **increments) -> None:
+        self.stats = replace(self.stats, **{k: getattr(self.stats, k) + v for k, v in increments.items()})

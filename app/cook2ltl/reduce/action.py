@@ -1,0 +1,61 @@
+"""Frames → actions: the verb and arguments as identifiers a prompt, a grammar and an atom can use."""
+
+from __future__ import annotations
+
+import re
+
+from cook2ltl.domain import ARGUMENT_LABELS, Connective, Frame, Label, field_of
+from cook2ltl.reduce.model import Action, Parameter
+
+CATEGORY = {Label.WHAT: "what", Label.WHERE: "where", Label.HOW: "how", Label.TIME: "time", Label.TEMP: "temperature"}
+# Leading words that do not name the thing: "the penne", "2 eggs", "rest of the mix".
+OBJECT_FILLERS = frozenset("a an the some any your its their this that these those each all of rest remaining".split())
+# Leading words of a time or temperature that do not name the state or duration reached.
+MARKERS = frozenset("until till for about around approximately once when after before over at to on in with is are".split())
+# Leading words of a how that link it to the action: "into small pieces", "with olive oil".
+LINKS = frozenset("into in with on onto to over using by from".split())
+_WORD = re.compile(r"[a-z0-9]+")
+
+
+def actions_of(frame: Frame) -> tuple[Action, ...]:
+    """One action, or one per object when the objects are alternatives ("add salt or pepper")."""
+    parameters = _parameters(frame)
+    whats = [p for p in parameters if p.category == "what"]
+    if frame.objects_joined_by != Connective.OR or len(whats) < 2:
+        return (Action(verb_identifier(frame.name), parameters),)
+    others = tuple(p for p in parameters if p.category != "what")
+    return tuple(Action(verb_identifier(frame.name), (what, *others)) for what in whats)
+
+
+def verb_identifier(verb: str) -> str:
+    return "_".join(_WORD.findall(verb.lower())) or "do"
+
+
+def _parameters(frame: Frame) -> tuple[Parameter, ...]:
+    parameters = []
+    for label in ARGUMENT_LABELS:
+        for argument in getattr(frame, field_of(label)):
+            parameters.append(parameter(CATEGORY[label], argument.span.text))
+    return tuple(parameters)
+
+
+def parameter(category: str, text: str) -> Parameter:
+    words = _WORD.findall(text.lower().replace("'s", ""))
+    if category in ("what", "where"):
+        value = _identifier(_strip(words, OBJECT_FILLERS, keep_numbers=False))
+        return Parameter(category, text, value, value)
+    if category == "how":
+        value = _identifier(_strip(_strip(words, LINKS, True), OBJECT_FILLERS, keep_numbers=False))
+        return Parameter(category, text, value, value)
+    return Parameter(category, text, _identifier(words), _identifier(_strip(words, MARKERS, keep_numbers=True)))
+
+
+def _strip(words: list[str], fillers: frozenset[str], keep_numbers: bool) -> list[str]:
+    start = 0
+    while start < len(words) - 1 and (words[start] in fillers or (not keep_numbers and words[start].isdigit())):
+        start += 1
+    return words[start:]
+
+
+def _identifier(words: list[str]) -> str:
+    return "_".join(words) or "it"

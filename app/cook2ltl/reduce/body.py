@@ -1,0 +1,79 @@
+"""Plan bodies as text: lines of calls, read and written, and made parametric for the library.
+
+A library body names the action's parameters as `$what`, `$what2`, `$where`, `$time` …, so the body
+learnt for boil(egg) serves boil(potato), while constants such as `pot` or `microwave` stay as written.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+
+from cook2ltl.reduce.model import Action, Call
+
+_CALL = re.compile(r"(?P<name>[a-z][a-z0-9_]*)\((?P<args>[^()]*)\)\Z")
+_CONDITION = re.compile(r"(?P<subject>\$?[a-z0-9_]+)\s*==\s*(?P<state>\$?[a-z0-9_]+)\Z")
+_ARG = re.compile(r"\$?[a-z0-9][a-z0-9_]*\Z")
+
+
+def read_body(text: str) -> tuple[tuple[Call, ...], tuple[str, ...]]:
+    """The calls of a body, and the lines that are not calls (comments and blanks are skipped)."""
+    calls, unread = [], []
+    for raw in text.splitlines():
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        call = read_call(line)
+        if call is None:
+            unread.append(line)
+        else:
+            calls.append(call)
+    return tuple(calls), tuple(unread)
+
+
+def read_call(line: str) -> Call | None:
+    match = _CALL.match(line.strip())
+    if not match:
+        return None
+    name, inside = match["name"], match["args"].strip()
+    if name == "wait":
+        condition = _CONDITION.match(inside)
+        return Call(name, (condition["subject"], condition["state"])) if condition else None
+    args = tuple(arg.strip() for arg in inside.split(",")) if inside else ()
+    return Call(name, args) if all(_ARG.match(arg) for arg in args) else None
+
+
+def write_body(calls: tuple[Call, ...]) -> str:
+    return "\n".join(call.text() for call in calls)
+
+
+def placeholders(action: Action) -> dict[str, str]:
+    """Each parameter's placeholder → its value in this action: {"$what": "egg", "$time": "cold"}."""
+    return bind(action.signature, tuple(parameter.value for parameter in action.parameters))
+
+
+def bind(signature: tuple[str, ...], arguments: tuple[str, ...]) -> dict[str, str]:
+    """Placeholders of a signature ("what", "what", "where") → $what, $what2, $where, bound to the arguments."""
+    seen: Counter[str] = Counter()
+    bound = {}
+    for category, argument in zip(signature, arguments):
+        seen[category] += 1
+        bound[f"${category}{seen[category] if seen[category] > 1 else ''}"] = argument
+    return bound
+
+
+def parametrize(calls: tuple[Call, ...], action: Action) -> str:
+    """The body with the action's values replaced by placeholders, as stored in the library."""
+    by_value: dict[str, str] = {}
+    for placeholder, value in placeholders(action).items():
+        by_value.setdefault(value, placeholder)
+    return write_body(tuple(Call(c.name, tuple(by_value.get(a, a) for a in c.args)) for c in calls))
+
+
+def instantiate(body: str, values: dict[str, str]) -> tuple[Call, ...] | None:
+    """A stored body with its placeholders filled, or None when it does not fit (an unbound placeholder,
+    a line that is not a call)."""
+    calls, unread = read_body(body)
+    if unread or any(arg.startswith("$") and arg not in values for call in calls for arg in call.args):
+        return None
+    return tuple(Call(call.name, tuple(values.get(arg, arg) for arg in call.args)) for call in calls)

@@ -1,0 +1,78 @@
+"""Primitive sets 𝒜 as data: assets/primitives/<name>.toml, or any TOML file a lab writes for its robot.
+
+    name = "my-robot"
+    examples = "my-robot-examples.txt"      # example functions for the prompt, relative to this file
+    objects = ["pot", "stovetop", ...]     # what the robot may touch, besides the recipe's own objects
+    states = ["boiled", "cold", ...]       # what a wait may wait for
+    [primitives]
+    pick_up = ["what"]                     # parameters in call order; `condition` is `subject == state`
+    put = ["what", "where"]
+    wait = ["condition"]
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+from cook2ltl import paths
+from cook2ltl.errors import UserError
+from cook2ltl.reduce.model import CONDITION, Primitive, PrimitiveSet
+
+BUILT_IN = ("recipe", "ai2thor")
+IDENTIFIER = re.compile(r"[a-z][a-z0-9_]*\Z")
+VALUE = re.compile(r"[a-z0-9][a-z0-9_]*\Z")
+
+
+def load_primitives(choice: str) -> PrimitiveSet:
+    """A built-in set by name (recipe, ai2thor) or a TOML file by path."""
+    path = paths.assets_dir() / "primitives" / f"{choice}.toml" if choice in BUILT_IN else Path(choice).expanduser()
+    if not path.is_file():
+        raise UserError(f"No primitive set {choice!r}.", f"use {' or '.join(BUILT_IN)}, or the path of a TOML file.")
+    try:
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
+        raise UserError(f"{path} is not valid TOML: {error}", "see assets/primitives/recipe.toml for the format.") from error
+    return _primitive_set(raw, path)
+
+
+def _primitive_set(raw: dict, path: Path) -> PrimitiveSet:
+    def bad(message: str) -> UserError:
+        return UserError(f"{path}: {message}", "see assets/primitives/recipe.toml for the format.")
+
+    table = raw.get("primitives")
+    if not isinstance(table, dict) or not table:
+        raise bad("no [primitives] table.")
+    primitives = []
+    for name, params in table.items():
+        if not IDENTIFIER.match(name):
+            raise bad(f"primitive {name!r} is not a lower-case identifier (use pick_up, not 'pick up').")
+        if not isinstance(params, list) or not all(isinstance(p, str) and IDENTIFIER.match(p) for p in params):
+            raise bad(f"primitive {name!r}: parameters must be a list of names, e.g. [\"what\", \"where\"].")
+        if CONDITION in params and params != [CONDITION]:
+            raise bad(f"primitive {name!r}: a `condition` parameter must be its only one.")
+        primitives.append(Primitive(name, tuple(params)))
+    objects, states = _words(raw, "objects", bad), _words(raw, "states", bad)
+    clash = set(states) & {p.name for p in primitives}
+    if clash:
+        raise bad(f"{', '.join(sorted(clash))} is both a primitive and a state; a state atom would read as the action.")
+    if not objects:
+        raise bad("`objects` is empty: list what the robot may handle besides a recipe's own objects.")
+    examples_name = raw.get("examples")
+    if not isinstance(examples_name, str):
+        raise bad("no `examples` file named (the prompt's example functions).")
+    examples_path = path.parent / examples_name
+    try:
+        examples = examples_path.read_text(encoding="utf-8").expandtabs(4)
+    except OSError as error:
+        raise bad(f"cannot read the examples file {examples_path}: {error.strerror}.") from error
+    name = raw.get("name", path.stem)
+    return PrimitiveSet(str(name), tuple(primitives), objects, states, examples, path)
+
+
+def _words(raw: dict, key: str, bad) -> tuple[str, ...]:
+    words = raw.get(key, [])
+    if not isinstance(words, list) or not all(isinstance(w, str) and VALUE.match(w) for w in words):
+        raise bad(f"`{key}` must be a list of lower-case identifiers such as baking_pan.")
+    return tuple(dict.fromkeys(words))

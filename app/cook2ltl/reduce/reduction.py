@@ -1,0 +1,62 @@
+"""f_AR: one action reduced to admissible plan lines by a constrained model, and library verbs expanded."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+from cook2ltl.reduce.body import bind, instantiate, read_body
+from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
+from cook2ltl.reduce.llm import LanguageModel
+from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
+from cook2ltl.reduce.prompt import build_prompt
+
+TOKENS_PER_LINE = 40  # a call with its comment; the grammar ends the body long before this budget
+MAX_DEPTH = 8  # library verbs calling library verbs; deeper means a cycle
+
+
+@dataclass(frozen=True)
+class ReductionSettings:
+    max_lines: int = 12
+    comments: bool = False  # the paper's comment lines; measured slower and no better (README)
+
+
+@dataclass(frozen=True)
+class LibraryVerb:
+    """A library entry as a callable for later prompts: `boil` with signature ("what",) and its body."""
+
+    verb: str
+    signature: tuple[str, ...]
+    body: str
+
+
+def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[LibraryVerb], model: LanguageModel,
+                  settings: ReductionSettings) -> Reduction:
+    """Ask the model for the body of `action`; lines the grammar would not allow are dropped and kept aside."""
+    vocab = vocabulary(primitives, ((v.verb, v.signature) for v in library), action)
+    prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments)
+    grammar = to_gbnf(vocab, settings.max_lines, settings.comments)
+    completion = model.complete(prompt.text, grammar, settings.max_lines * TOKENS_PER_LINE)
+    calls, unread = read_body(completion.text)
+    kept = tuple(call for call in calls if admits(vocab, call))[: settings.max_lines]
+    dropped = unread + tuple(call.text() for call in calls if not admits(vocab, call))
+    return Reduction(action, kept, Source.LLM, completion.usage, dropped, prompt.digest)
+
+
+def expand(calls: Sequence[Call], primitives: PrimitiveSet, find: Callable[[str, int], LibraryVerb | None],
+           depth: int = 0) -> tuple[Call, ...] | None:
+    """Library verbs in a body replaced by their own bodies, down to primitives; None if something cannot be."""
+    if depth > MAX_DEPTH:
+        return None
+    expanded: list[Call] = []
+    for call in calls:
+        if primitives.get(call.name) is not None:
+            expanded.append(call)
+            continue
+        verb = find(call.name, len(call.args))
+        inner = instantiate(verb.body, bind(verb.signature, call.args)) if verb else None
+        inner = expand(inner, primitives, find, depth + 1) if inner is not None else None
+        if inner is None:
+            return None
+        expanded.extend(inner)
+    return tuple(expanded)

@@ -1,0 +1,89 @@
+"""The GBNF grammar generated per action: it admits the paper's plans and nothing outside 𝒜."""
+
+import re
+
+import pytest
+
+from cook2ltl.reduce.action import parameter
+from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
+from cook2ltl.reduce.model import Action, Call
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.reduce.prompt import example_functions
+from cook2ltl.reduce.body import read_call
+from tests.reduce.gbnf import accepts
+
+RECIPE = load_primitives("recipe")
+THOR = load_primitives("ai2thor")
+
+
+def action(verb, *params):
+    return Action(verb, tuple(parameter(category, text) for category, text in params))
+
+
+def header_action(function_header: str) -> Action:
+    """`def bake(cake: what, oven: where, 30_minutes: time):` back to an action."""
+    verb, inside = re.match(r"def (\w+)\((.*)\):", function_header).groups()
+    pairs = [part.split(": ") for part in inside.split(", ")]
+    return Action(verb, tuple(parameter(category, name.replace("_", " ")) for name, category in pairs))
+
+
+def body_text(lines):
+    return "".join(f"    {line}\n" for line in lines) + "\n"
+
+
+@pytest.mark.parametrize("primitives, name", [
+    (RECIPE, "cook"), (RECIPE, "bake"), (THOR, "refrigerate"), (THOR, "store"),
+])
+def test_accepts_the_papers_example_bodies(primitives, name, comments=False):
+    function_header, body = next((h, b) for h, b in example_functions(primitives) if h.startswith(f"def {name}("))
+    vocab = vocabulary(primitives, [], header_action(function_header))
+    calls = [line for line in body if not line.startswith("#")]
+    assert accepts(to_gbnf(vocab, max_lines=12, comments=False), body_text(calls))
+    assert accepts(to_gbnf(vocab, max_lines=12, comments=True), body_text(body))  # with the paper's comments
+    assert all(admits(vocab, read_call(line)) for line in calls)
+
+
+def test_rejects_a_non_primitive_a_wrong_arity_and_unknown_things():
+    vocab = vocabulary(RECIPE, [], action("boil", ("what", "the eggs")))
+    grammar = to_gbnf(vocab, max_lines=12, comments=False)
+    assert accepts(grammar, body_text(["put(eggs, pot)", "turn_on(stovetop)", "wait(eggs == boiled)"]))
+    for line in ["fry(eggs)", "put(eggs)", "put(unicorn, pot)", "wait(eggs == exploded)", "boil(eggs)",
+                 "pick up(eggs)", "wait(timer == soon)"]:
+        assert not accepts(grammar, body_text([line])), line
+        call = read_call(line)
+        assert call is None or not admits(vocab, call), line
+
+
+def test_the_number_of_lines_is_capped_and_a_body_is_not_empty():
+    grammar = to_gbnf(vocabulary(RECIPE, [], action("stir", ("what", "soup"))), max_lines=3, comments=False)
+    assert accepts(grammar, body_text(["stir(soup)"] * 3))
+    assert not accepts(grammar, body_text(["stir(soup)"] * 4))
+    assert not accepts(grammar, "\n")
+
+
+def test_the_actions_own_arguments_join_the_vocabulary():
+    blend = action("blend", ("what", "the mix"), ("time", "until slushy"))
+    vocab = vocabulary(RECIPE, [], blend)
+    assert "mix" in vocab.objects and "slushy" in vocab.states
+    grammar = to_gbnf(vocab, max_lines=12, comments=False)
+    assert accepts(grammar, body_text(["put(mix, blender)", "turn_on(blender)", "wait(mix == slushy)"]))
+    timed = vocabulary(RECIPE, [], action("simmer", ("what", "sauce"), ("time", "for 20 minutes")))
+    assert timed.durations == ("20_minutes",)
+    assert admits(timed, Call("wait", ("timer", "20_minutes"))) and admits(timed, Call("wait", ("timer", "2_hours")))
+    assert not admits(timed, Call("wait", ("sauce", "20_minutes")))
+
+
+def test_library_verbs_join_later_grammars_but_not_their_own():
+    library = [("boil", ("what",)), ("bake", ("what", "time")), ("put", ("what",))]
+    vocab = vocabulary(RECIPE, library, action("mash", ("what", "potatoes")))
+    grammar = to_gbnf(vocab, max_lines=12, comments=False)
+    assert accepts(grammar, body_text(["boil(potatoes)", "bake(potatoes, golden)", "stir(potatoes)"]))
+    assert not accepts(grammar, body_text(["boil(potatoes, pot)"]))
+    assert [s.name for s in vocab.shapes].count("put") == 1  # a library "put" never shadows the primitive
+    own = vocabulary(RECIPE, library, action("boil", ("what", "rice")))
+    assert not admits(own, Call("boil", ("rice",)))  # no recursion into the verb being reduced
+
+
+def test_a_state_named_like_a_primitive_is_not_offered():
+    vocab = vocabulary(THOR, [], action("drain", ("what", "pasta"), ("time", "until empty")))
+    assert "empty" not in vocab.states  # empty(pasta) would read as the action empty
