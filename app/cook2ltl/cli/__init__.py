@@ -6,6 +6,7 @@ import sys
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 
 from cook2ltl.cli.models_command import models_app
 from cook2ltl.cli.parse_command import parse_command
@@ -30,7 +31,7 @@ def doctor_command() -> None:
     failures = 0
     for check in run_checks():
         mark = "[green]✓[/green]" if check.ok else "[bold red]✗[/bold red]"
-        console.print(f"{mark} {check.name:<28} {check.detail}")
+        console.print(f"{mark} {check.name:<28} {escape(check.detail)}")
         if not check.ok:
             failures += 1
             console.print(f"    fix: [bold]{check.fix}[/bold]")
@@ -46,7 +47,7 @@ def main() -> None:
         app()
     except UserError as error:
         console = Console(stderr=True)
-        console.print(f"[bold red]error:[/bold red] {error.message}", highlight=False)
+        console.print(f"[bold red]error:[/bold red] {escape(error.message)}", highlight=False)
         if error.hint:
-            console.print(f"[dim]hint:[/dim] {error.hint}", highlight=False)
+            console.print(f"[dim]hint:[/dim] {escape(error.hint)}", highlight=False)
         sys.exit(2)
