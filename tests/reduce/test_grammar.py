@@ -87,3 +87,10 @@ def test_library_verbs_join_later_grammars_but_not_their_own():
 def test_a_state_named_like_a_primitive_is_not_offered():
     vocab = vocabulary(THOR, [], action("drain", ("what", "pasta"), ("time", "until empty")))
     assert "empty" not in vocab.states  # empty(pasta) would read as the action empty
+
+
+def test_a_temperature_is_a_state_not_a_duration():
+    vocab = vocabulary(RECIPE, [], action("preheat", ("what", "the oven"), ("temperature", "350 degrees")))
+    assert vocab.durations == () and "350_degrees" in vocab.states
+    assert admits(vocab, Call("wait", ("oven", "350_degrees")))
+    assert not admits(vocab, Call("wait", ("timer", "350_degrees")))

@@ -133,7 +133,9 @@ def test_the_translate_command(monkeypatch, tmp_path):
 
     monkeypatch.setattr(cook2ltl.stack, "span_extractor", lambda settings: ScriptedSpans(SPANS))
     monkeypatch.setattr(cook2ltl.stack, "dependency_parser", lambda: ScriptedDependencies())
-    monkeypatch.setattr(cook2ltl.reduce.llm, "load_model", lambda name: ScriptedModel({"boil": BOIL, "mash": MASH}))
+    models = []
+    monkeypatch.setattr(cook2ltl.reduce.llm, "load_model",
+                        lambda name: models.append(ScriptedModel({"boil": BOIL, "mash": MASH})) or models[-1])
     monkeypatch.setenv("COOK2LTL_LIBRARY", str(tmp_path / "library.sqlite"))
     monkeypatch.setenv("COOK2LTL_CONFIG", str(tmp_path / "none.toml"))
     recipe = tmp_path / "recipe.txt"
@@ -142,9 +144,10 @@ def test_the_translate_command(monkeypatch, tmp_path):
     shown = runner.invoke(app, ["translate", str(recipe)])
     assert shown.exit_code == 0, shown.output
     assert "boil(egg)  ← llm #1" in shown.output and "◇" in shown.output and "2 LLM calls" in shown.output
-    as_json = runner.invoke(app, ["translate", str(recipe), "--json", "--variant", "ar*"])
+    as_json = runner.invoke(app, ["translate", str(recipe), "--json", "--variant", "ar*", "--comments"])
     data = json.loads(as_json.stdout)
     assert data["variant"] == "AR*" and data["stats"]["llm_calls"] == 4
+    assert "comment ::=" in models[-1].grammars[0] and "comment ::=" not in models[0].grammars[0]
     assert (tmp_path / "library.sqlite").exists()
     missing = runner.invoke(app, ["translate", str(recipe), "--primitives", "nowhere.toml"])
     assert missing.exit_code != 0

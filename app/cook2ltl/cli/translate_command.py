@@ -29,6 +29,8 @@ def translate_command(
                                            "else library.sqlite in the user data folder)."),
     model: str = typer.Option(DEFAULT_MODEL, "--model", help="Language model of the manifest (`cook2ltl models`)."),
     max_lines: int = typer.Option(12, "--max-lines", min=1, max=40, help="Most lines one reduction may have."),
+    comments: bool = typer.Option(False, "--comments/--no-comments",
+                                  help="Let the model comment each line, as the paper's prompt does (about 2x slower)."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
@@ -47,7 +49,7 @@ def translate_command(
     chosen = load_primitives(primitives)
     language_model = load_model(model)
     store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
-    translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines=max_lines))
+    translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments))
     errors = Console(stderr=True)
     try:
         with errors.status("parsing…"):

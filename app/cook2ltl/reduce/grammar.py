@@ -42,7 +42,8 @@ def vocabulary(primitives: PrimitiveSet, library_verbs: Iterable[tuple[str, tupl
     for verb, signature in library_verbs:
         if verb not in taken:
             shapes.append(Shape(verb, tuple(VALUE if c in ("time", "temperature") else OBJECT for c in signature)))
-    durations = tuple(value for value in action.values if value[:1].isdigit())
+    # "30 minutes" is a duration a timer waits for; "350 degrees" or "until golden" a state to reach.
+    durations = tuple(dict.fromkeys(p.value for p in action.parameters if p.category == "time" and p.value[:1].isdigit()))
     names = {shape.name for shape in shapes}  # a state named like an action would read as that action
     return Vocabulary(
         shapes=tuple(dict.fromkeys(shapes)),
