@@ -19,6 +19,8 @@ from cook2ltl.domain import ParsedRecipe, Step
 from cook2ltl.library.store import Library
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.patterns import Element, sequenced_visit
+from cook2ltl.parse.backends import DependencyParser, SpanExtractor
+from cook2ltl.parse.recipe import parse_recipe
 from cook2ltl.reduce.action import actions_of
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders
 from cook2ltl.reduce.llm import LanguageModel
@@ -84,6 +86,11 @@ class Translation:
 
 
 @dataclass(frozen=True)
+class Parsed:
+    recipe: ParsedRecipe
+
+
+@dataclass(frozen=True)
 class Started:
     steps: int
     actions: int
@@ -106,12 +113,20 @@ class Finished:
     translation: Translation
 
 
-Event = Started | ActionDone | StepDone | Finished
+Event = Parsed | Started | ActionDone | StepDone | Finished
+
+
+def run(text: str, spans: SpanExtractor, dependencies: DependencyParser, translator: Translator,
+        cancel: threading.Event | None = None) -> Iterator[Event]:
+    """The whole of Algorithm 1 on a recipe's text: preprocessing and parsing, then `translate`."""
+    parsed = parse_recipe(text, spans, dependencies)
+    yield Parsed(parsed)
+    yield from translate(parsed, translator, cancel)
 
 
 def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Event | None = None) -> Iterator[Event]:
     started = time.perf_counter()
-    run = _Run(translator)
+    state = _Run(translator)
     total = sum(len(actions_of(frame)) for step in parsed.steps for frame in step.frames)
     yield Started(len(parsed.steps), total)
     steps, elements, done = [], [], 0
@@ -122,7 +137,7 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
             for action in actions_of(frame):
                 if cancel is not None and cancel.is_set():
                     return
-                result, element = run.action(frame_index, action)
+                result, element = state.action(frame_index, action)
                 results.append(result)
                 done += 1
                 yield ActionDone(step.index, result, done)
@@ -131,11 +146,11 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
             parts.append(Part(alternatives(options), frame.negated) if options else None)
         element = step_element(parts, step.links)
         formula = sequenced_visit(element)
-        problems = run.problems(results, formula)
+        problems = state.problems(results, formula)
         elements.append(element)
         steps.append(StepResult(step, tuple(results), formula, problems))
         yield StepDone(steps[-1])
-    stats = replace(run.stats, seconds=time.perf_counter() - started)
+    stats = replace(state.stats, seconds=time.perf_counter() - started)
     yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
                                tuple(steps), sequenced_visit(*elements), stats))
 

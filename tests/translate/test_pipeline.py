@@ -9,7 +9,7 @@ from typer.testing import CliRunner
 from cook2ltl.library import Library
 from cook2ltl.ltl import parse
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import ActionDone, Finished, Started, StepDone, Translator, Variant, translate
+from cook2ltl.pipeline import ActionDone, Finished, Parsed, Started, StepDone, Translator, Variant, run, translate
 from cook2ltl.reduce.model import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.translate.serialize import translation_json
@@ -31,7 +31,7 @@ def parsed(text=TEXT, spans=SPANS):
     return parse_recipe(text, ScriptedSpans(spans), ScriptedDependencies())
 
 
-def run(translator, recipe=None):
+def translated(translator, recipe=None):
     events = list(translate(recipe or parsed(), translator))
     assert isinstance(events[0], Started) and isinstance(events[-1], Finished)
     return events[-1].translation, events
@@ -46,7 +46,7 @@ def library(tmp_path):
 
 def test_the_library_serves_boil_egg_for_boil_potato(library):
     model = ScriptedModel({"boil": BOIL, "mash": MASH})
-    translation, _ = run(Translator(load_primitives("recipe"), model, library))
+    translation, _ = translated(Translator(load_primitives("recipe"), model, library))
     sources = [[a.reduction.source for a in step.actions] for step in translation.steps]
     assert sources == [[Source.LLM], [Source.PRIMITIVE], [Source.LIBRARY, Source.LLM]]
     boil_potato = translation.steps[2].actions[0]
@@ -64,9 +64,9 @@ def test_the_library_serves_boil_egg_for_boil_potato(library):
 
 
 def test_a_second_run_needs_no_model_at_all(library):
-    run(Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library))
+    translated(Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library))
     again = ScriptedModel({})
-    translation, _ = run(Translator(load_primitives("recipe"), again, library))
+    translation, _ = translated(Translator(load_primitives("recipe"), again, library))
     assert again.calls == 0 and translation.stats.library_hits == 3
 
 
@@ -74,7 +74,7 @@ def test_a_second_run_needs_no_model_at_all(library):
 def test_the_papers_variants(tmp_path, variant, calls):
     model = ScriptedModel({"boil": BOIL, "mash": MASH, "put": "put(egg, bowl)"})
     library = Library(tmp_path / "library.sqlite") if variant == Variant.AR_LIBRARY else None
-    translation, _ = run(Translator(load_primitives("recipe"), model, library, variant))
+    translation, _ = translated(Translator(load_primitives("recipe"), model, library, variant))
     assert model.calls == translation.stats.llm_calls == calls
     if library is not None:
         library.close()
@@ -83,7 +83,7 @@ def test_the_papers_variants(tmp_path, variant, calls):
 
 
 def test_step_formulas_use_only_primitives(library):
-    translation, _ = run(Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library))
+    translation, _ = translated(Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library))
     put_step = translation.steps[1]
     assert put_step.formula is parse('F "put(egg, bowl)"')
     for step in translation.steps:
@@ -95,7 +95,7 @@ def test_step_formulas_use_only_primitives(library):
 def test_an_action_without_an_admissible_plan_is_reported(library):
     model = ScriptedModel({"boil": "fry(egg)\nexplode(egg)"})
     text = "Boil the egg."
-    translation, _ = run(Translator(load_primitives("recipe"), model, library), parsed(text, {text: SPANS[text]}))
+    translation, _ = translated(Translator(load_primitives("recipe"), model, library), parsed(text, {text: SPANS[text]}))
     step = translation.steps[0]
     assert step.problems == ("no admissible plan for boil(egg)",)
     assert step.actions[0].reduction.dropped == ("fry(egg)", "explode(egg)")
@@ -104,7 +104,7 @@ def test_an_action_without_an_admissible_plan_is_reported(library):
 
 def test_progress_events_and_cancel(library):
     translator = Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library)
-    _, events = run(translator)
+    _, events = translated(translator)
     assert events[0] == Started(steps=3, actions=4)
     assert [e.done for e in events if isinstance(e, ActionDone)] == [1, 2, 3, 4]
     assert sum(isinstance(e, StepDone) for e in events) == 3
@@ -115,8 +115,16 @@ def test_progress_events_and_cancel(library):
     assert [type(e) for e in stream] == [StepDone]  # the step under way is closed, nothing more is reduced
 
 
+def test_run_parses_first():
+    translator = Translator(load_primitives("recipe"), ScriptedModel({}), variant=Variant.AR)
+    text = "Put the egg in a bowl."
+    events = list(run(text, ScriptedSpans({text: SPANS[text]}), ScriptedDependencies(), translator))
+    assert isinstance(events[0], Parsed) and events[0].recipe.steps[0].frames[0].name == "put"
+    assert isinstance(events[1], Started) and isinstance(events[-1], Finished)
+
+
 def test_json_has_spot_formulas_and_stats(library):
-    translation, _ = run(Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library))
+    translation, _ = translated(Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library))
     data = json.loads(json.dumps(translation_json(translation)))
     assert data["stats"]["llm_calls"] == 2 and data["variant"] == "AR+A"
     assert [parse(step["formula"]) for step in data["steps"]] == [step.formula for step in translation.steps]
@@ -143,7 +151,7 @@ def test_the_translate_command(monkeypatch, tmp_path):
     runner = CliRunner()
     shown = runner.invoke(app, ["translate", str(recipe)])
     assert shown.exit_code == 0, shown.output
-    assert "boil(egg)  ← llm #1" in shown.output and "◇" in shown.output and "2 LLM calls" in shown.output
+    assert "boil(the egg)" in shown.output and "→ boil(egg)  llm #1" in shown.output and "◇" in shown.output and "2 LLM calls" in shown.output
     as_json = runner.invoke(app, ["translate", str(recipe), "--json", "--variant", "ar*", "--comments"])
     data = json.loads(as_json.stdout)
     assert data["variant"] == "AR*" and data["stats"]["llm_calls"] == 4

@@ -36,8 +36,7 @@ def translate_command(
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
     from cook2ltl import paths
     from cook2ltl.library import Library
-    from cook2ltl.parse import parse_recipe
-    from cook2ltl.pipeline import Translator, translate
+    from cook2ltl.pipeline import Translator, run
     from cook2ltl.reduce.llm import load_model
     from cook2ltl.reduce.primitives import load_primitives
     from cook2ltl.reduce.reduction import ReductionSettings
@@ -52,9 +51,8 @@ def translate_command(
     translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments))
     errors = Console(stderr=True)
     try:
-        with errors.status("parsing…"):
-            parsed = parse_recipe(text, span_extractor(load_settings()), dependency_parser())
-        translation = _run(translate(parsed, translator), errors)
+        events = run(text, span_extractor(load_settings()), dependency_parser(), translator)
+        translation = _follow(events, errors)
     finally:
         if store is not None:
             store.close()
@@ -64,13 +62,13 @@ def translate_command(
         show(translation, Console())
 
 
-def _run(events, console: Console) -> Translation:
+def _follow(events, console: Console) -> Translation:
     columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
     with Progress(*columns, console=console, transient=True) as progress:
-        task = progress.add_task("reducing", total=None)
+        task = progress.add_task("parsing", total=None)
         for event in events:
             if isinstance(event, Started):
-                progress.update(task, total=event.actions)
+                progress.update(task, total=event.actions, description="reducing")
             elif isinstance(event, ActionDone):
                 reduction = event.result.reduction
                 progress.update(task, completed=event.done,
@@ -87,20 +85,12 @@ def show(translation: Translation, console: Console) -> None:
                   f"model {translation.model}[/dim]")
     for step in translation.steps:
         console.print(Text(f"{step.step.index + 1:>3}. ", style="dim") + Text(step.step.sentence.text))
-        for result in step.actions:
-            reduction = result.reduction
-            line = Text("      ")
-            line.append(reduction.action.text(), style="bold")
-            entry = f" #{reduction.entry_id}" if reduction.entry_id is not None else ""
-            line.append(f"  ← {reduction.source.value}{entry}", style=SOURCE_STYLE[reduction.source])
-            console.print(line)
-            if reduction.source != Source.PRIMITIVE:
-                for call in reduction.body:
-                    console.print(f"          {call.text()}", highlight=False)
-            for dropped in reduction.dropped:
-                console.print(f"          [red]✗ {dropped}[/red] [dim](not admissible, dropped)[/dim]", highlight=False)
-        console.print(Text("      φ = ", style="dim") + Text(to_unicode(step.formula), style="yellow"))
-        console.print(Text("          " + to_spot(step.formula), style="dim"))
+        for index, frame in enumerate(step.step.frames):
+            console.print(Text("      " + frame.signature(), style="dim"))
+            for result in (r for r in step.actions if r.frame_index == index):
+                _show_reduction(result.reduction, console)
+        console.print(Text("      φ = ", style="dim") + Text(to_unicode(step.formula), style="yellow"), soft_wrap=True)
+        console.print(Text("          " + to_spot(step.formula), style="dim"), soft_wrap=True)
         for problem in step.problems:
             console.print(f"      [bold red]![/bold red] {problem}", highlight=False)
     stats = translation.stats
@@ -109,3 +99,16 @@ def show(translation: Translation, console: Console) -> None:
         f"{stats.llm_calls} LLM calls ({stats.prompt_tokens} prompt + {stats.completion_tokens} completion tokens, "
         f"{stats.llm_seconds:.1f} s); {stats.new_entries} new library entries; {stats.seconds:.1f} s in all[/dim]"
     )
+
+
+def _show_reduction(reduction, console: Console) -> None:
+    line = Text("        → ")
+    line.append(reduction.action.text(), style="bold")
+    entry = f" #{reduction.entry_id}" if reduction.entry_id is not None else ""
+    line.append(f"  {reduction.source.value}{entry}", style=SOURCE_STYLE[reduction.source])
+    console.print(line)
+    if reduction.source != Source.PRIMITIVE:
+        for call in reduction.body:
+            console.print(f"            {call.text()}", highlight=False)
+    for dropped in reduction.dropped:
+        console.print(f"            [red]✗ {dropped}[/red] [dim](not admissible, dropped)[/dim]", highlight=False)
