@@ -60,7 +60,7 @@ def key_calls_found(lines: list[str], keys: list[str]) -> int:
 def bench(model_name: str, comments: bool, verbose: bool) -> dict:
     model = load_model(model_name)
     started = time.perf_counter()
-    model.complete("x", 'root ::= "x"', 1)  # load the weights outside the timings
+    model.complete("", "x", 'root ::= "x"', 1)  # load the weights outside the timings
     load_seconds = time.perf_counter() - started
     passed, partial, seconds, cold, tokens = 0, [], [], [], []
     last_set = None

@@ -6,6 +6,8 @@ and a run that finds every action in the library never loads a model.
 
 from __future__ import annotations
 
+import ctypes
+import hashlib
 import os
 import time
 from dataclasses import dataclass
@@ -27,28 +29,36 @@ class Completion:
 
 
 class LanguageModel(Protocol):
-    """Completes a prompt under a GBNF grammar, deterministically."""
+    """Completes `static + dynamic` under a GBNF grammar, deterministically.
+
+    `static` is the part many prompts share (a backend may keep it evaluated); `dynamic` is this prompt's own.
+    """
 
     name: str
 
-    def complete(self, prompt: str, grammar: str, max_tokens: int) -> Completion: ...
+    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int) -> Completion: ...
 
 
 class LlamaModel:
     """A GGUF model run by llama-cpp-python at temperature 0 with a fixed seed.
 
-    llama-cpp-python keeps the tokens it last evaluated and re-evaluates only from the first token
-    that differs, so prompts that share their static prefix cost only their dynamic tail.
+    The static part is always evaluated on its own and kept: later prompts evaluate only their dynamic
+    tail. Evaluating it the same way every time also keeps results independent of what was reduced before
+    (llama.cpp's arithmetic differs slightly with the batch a token is evaluated in). With a `state_dir`,
+    the evaluated static part is saved to disk and restored by later processes.
     """
 
-    def __init__(self, name: str, path: Path, seed: int = SEED, threads: int | None = None) -> None:
+    def __init__(self, name: str, path: Path, seed: int = SEED, threads: int | None = None,
+                 state_dir: Path | None = None) -> None:
         self.name = name
         self.path = path
         self.seed = seed
         self.threads = threads or os.cpu_count() or 1
+        self.state_dir = state_dir
+        self.restored = False  # whether the last static part came from disk
         self._llama = None
 
-    def complete(self, prompt: str, grammar: str, max_tokens: int) -> Completion:
+    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int) -> Completion:
         llama = self._loaded()
         from llama_cpp import LlamaGrammar
 
@@ -58,8 +68,12 @@ class LlamaModel:
         except ValueError as error:
             raise UserError(f"llama.cpp rejected the generated grammar: {error}",
                             "check the names in the primitive set file; they must be plain identifiers.") from error
+        # Tokenised apart, so the static tokens never depend on what follows them.
+        prefix = llama.tokenize(static.encode())
+        tokens = prefix + llama.tokenize(dynamic.encode(), add_bos=False)
+        self._keep_only(llama, prefix, static)
         result = llama.create_completion(
-            prompt, max_tokens=max_tokens, temperature=0.0, seed=self.seed, grammar=compiled,
+            tokens, max_tokens=max_tokens, temperature=0.0, seed=self.seed, grammar=compiled,
             repeat_penalty=1.0,  # plans rightly repeat objects (pot, pot, pot); a penalty would push them out
         )
         usage = result["usage"]
@@ -67,6 +81,54 @@ class LlamaModel:
             result["choices"][0]["text"],
             Usage(usage["prompt_tokens"], usage["completion_tokens"], time.perf_counter() - started),
         )
+
+    def _keep_only(self, llama, prefix: list[int], static: str) -> None:
+        """Leave exactly the static part evaluated: from memory, from disk, or evaluated now and saved."""
+        self.restored = False
+        count = len(prefix)
+        if llama.n_tokens >= count and llama.input_ids[:count].tolist() == prefix:
+            llama.n_tokens = count  # llama-cpp-python evaluates the rest of the prompt from here
+            return
+        path = self._state_file(static)
+        if path is not None and path.is_file() and self._restore(llama, path, prefix):
+            self.restored = True
+            return
+        llama.reset()
+        llama.eval(prefix)
+        if path is not None:
+            self._save(llama, path)
+
+    def _state_file(self, static: str) -> Path | None:
+        if self.state_dir is None:
+            return None
+        import llama_cpp
+
+        # Valid for this model file, static part, context size and llama.cpp build only.
+        key = hashlib.sha256(f"{self.path.stat().st_size}|{CONTEXT_TOKENS}|{llama_cpp.__version__}|{static}".encode())
+        return self.state_dir / f"{self.name}-{key.hexdigest()[:16]}.state"
+
+    def _restore(self, llama, path: Path, prefix: list[int]) -> bool:
+        import llama_cpp
+
+        tokens = (llama_cpp.llama_token * CONTEXT_TOKENS)()
+        count = ctypes.c_size_t(0)
+        loaded = llama_cpp.llama_state_load_file(llama._ctx.ctx, str(path).encode(), tokens, CONTEXT_TOKENS,
+                                                 ctypes.byref(count))
+        if not loaded or list(tokens[: count.value]) != prefix:
+            llama.reset()  # a stale or damaged file is ignored and overwritten
+            return False
+        llama.input_ids[: len(prefix)] = prefix
+        llama.n_tokens = len(prefix)
+        return True
+
+    def _save(self, llama, path: Path) -> None:
+        import llama_cpp
+
+        path.parent.mkdir(parents=True, exist_ok=True)
+        partial = path.with_suffix(".partial")
+        tokens = (llama_cpp.llama_token * llama.n_tokens)(*llama.input_ids[: llama.n_tokens].tolist())
+        if llama_cpp.llama_state_save_file(llama._ctx.ctx, str(partial).encode(), tokens, llama.n_tokens):
+            partial.replace(path)  # never a half-written state under the final name
 
     def _loaded(self):
         if self._llama is None:
@@ -84,6 +146,7 @@ class LlamaModel:
 
 def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
     """A GGUF model of the manifest by name; it is read from disk at its first completion."""
+    from cook2ltl import paths
     from cook2ltl.models.manifest import State, load_manifest, model_path, state_of
 
     manifest = load_manifest()
@@ -93,4 +156,4 @@ def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
         raise UserError(f"No language model {name!r} in the model manifest.", f"choose one of: {', '.join(choices)}.")
     if state_of(entry, verify_hash=False) != State.READY:
         raise UserError(f"The model {name!r} is not provisioned.", "run `make models` (or `cook2ltl models provision`).")
-    return LlamaModel(name, model_path(entry))
+    return LlamaModel(name, model_path(entry), state_dir=paths.model_cache_dir() / "prompt-states")

@@ -36,7 +36,7 @@ def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[Li
     vocab = vocabulary(primitives, ((v.verb, v.signature) for v in library), action)
     prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments)
     grammar = to_gbnf(vocab, settings.max_lines, settings.comments)
-    completion = model.complete(prompt.text, grammar, settings.max_lines * TOKENS_PER_LINE)
+    completion = model.complete(prompt.static, prompt.dynamic, grammar, settings.max_lines * TOKENS_PER_LINE)
     calls, unread = read_body(completion.text)
     kept = tuple(call for call in calls if admits(vocab, call))[: settings.max_lines]
     dropped = unread + tuple(call.text() for call in calls if not admits(vocab, call))

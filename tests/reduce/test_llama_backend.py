@@ -1,0 +1,49 @@
+"""The llama.cpp backend with the tiny test model: grammar honoured, results independent of the cache."""
+
+import pytest
+
+from cook2ltl.models.manifest import State, load_manifest, model_path, state_of
+from cook2ltl.reduce.action import parameter
+from cook2ltl.reduce.grammar import admits, vocabulary
+from cook2ltl.reduce.llm import LlamaModel
+from cook2ltl.reduce.model import Action
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
+
+TINY = "smollm2-135m"
+SETTINGS = ReductionSettings(max_lines=2)
+
+
+@pytest.fixture(scope="module")
+def tiny_path():
+    entry = load_manifest()[TINY]
+    if state_of(entry, verify_hash=False) != State.READY:
+        pytest.fail(f"model not provisioned: {TINY}; run `make models`")
+    return model_path(entry)
+
+
+def action(verb, *params):
+    return Action(verb, tuple(parameter(category, text) for category, text in params))
+
+
+def test_every_line_is_admissible(tiny_path):
+    primitives = load_primitives("recipe")
+    task = action("simmer", ("what", "the sauce"), ("time", "for 20 minutes"))
+    reduction = reduce_action(task, primitives, [], LlamaModel(TINY, tiny_path), ReductionSettings(3, comments=True))
+    assert 1 <= len(reduction.body) <= 3 and reduction.dropped == ()
+    assert all(admits(vocabulary(primitives, [], task), call) for call in reduction.body)
+    assert reduction.usage.completion_tokens > 0 and reduction.usage.prompt_tokens > 300
+
+
+def test_results_do_not_depend_on_the_cache(tiny_path, tmp_path):
+    thor = load_primitives("ai2thor")
+    potato, bread = action("microwave", ("what", "the potato")), action("cut", ("what", "the bread"))
+    first = LlamaModel(TINY, tiny_path, state_dir=tmp_path)
+    in_order = [reduce_action(a, thor, [], first, SETTINGS).body for a in (potato, bread)]
+    assert len(list(tmp_path.glob("*.state"))) == 1  # the evaluated static prefix, saved once
+    second = LlamaModel(TINY, tiny_path, state_dir=tmp_path)
+    reversed_order = [reduce_action(a, thor, [], second, SETTINGS).body for a in (bread, potato)]
+    assert second.restored is False  # the second action reused the prefix from memory
+    assert reversed_order[::-1] == in_order
+    third = LlamaModel(TINY, tiny_path, state_dir=tmp_path)
+    assert reduce_action(potato, thor, [], third, SETTINGS).body == in_order[0] and third.restored
