@@ -99,3 +99,11 @@ def test_span_offsets_are_absolute():
         for span in step.spans:
             assert text[span.start:span.end] == span.text
     assert recipe.steps[1].spans[0].label == Label.VERB
+
+
+def test_a_negation_inside_the_verb_span_is_trimmed_and_kept_as_negation():
+    text = "Do not boil the sauce."
+    recipe = parse(text, {text: [("VERB", "Do not boil"), ("WHAT", "the sauce")]})
+    frame = recipe.steps[0].frames[0]
+    assert frame.verb.text == "boil" and text[frame.verb.start:frame.verb.end] == "boil"
+    assert frame.negated and frame.signature() == "not boil(the sauce)"

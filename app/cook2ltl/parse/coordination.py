@@ -10,11 +10,16 @@ from cook2ltl.domain import Connective, Label, Span, Token
 
 _VERB_SEPARATOR = re.compile(r"\s*,?\s*\b(?:and/or|and then|and|or|then)\b\s*|\s*,\s*|\s*/\s*", re.IGNORECASE)
 _OR = re.compile(r"\bor\b", re.IGNORECASE)
+# A span model may take the negation into the verb ("Do not boil"); the verb is what follows it.
+_LEADING_NEGATION = re.compile(r"^(?:do\s+not|don'?t|do\s+n't|never|not)\s+", re.IGNORECASE)
 NEGATIONS = {"not", "n't", "never", "no"}
 
 
 def split_verb(span: Span) -> list[tuple[Span, Connective]]:
     """"Butter or oil" is two actions: each part with the connective that joins it to the next one."""
+    negation = _LEADING_NEGATION.match(span.text)
+    if negation and negation.end() < len(span.text):
+        span = _piece(span, negation.end(), len(span.text))
     parts: list[tuple[Span, Connective]] = []
     cursor = 0
     for match in _VERB_SEPARATOR.finditer(span.text):
