@@ -16,6 +16,7 @@ def test_models_lists_every_model_as_ready():
     assert result.returncode == 0, result.stderr
     for name in load_manifest():
         assert name in result.stdout
+    assert result.stdout.count(" ready ") == len(load_manifest())
     assert "missing" not in result.stdout and "corrupt" not in result.stdout
 
 

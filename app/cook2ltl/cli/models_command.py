@@ -30,7 +30,7 @@ def list_models(context: typer.Context) -> None:
                       f"{entry.origin()}\n[dim]{entry.upstream}[/dim]", entry.licence)
     console = Console()
     console.print(table)
-    console.print(f"[dim]weights: {paths.model_cache_dir()}  ·  `cook2ltl models provision` fetches what is missing[/dim]")
+    console.print(f"[dim]weights: {paths.model_cache_dir()}  ·  `cook2ltl models provision` fetches or trains the rest[/dim]")
 
 
 @models_app.command("provision")
