@@ -107,3 +107,10 @@ def test_a_negation_inside_the_verb_span_is_trimmed_and_kept_as_negation():
     frame = recipe.steps[0].frames[0]
     assert frame.verb.text == "boil" and text[frame.verb.start:frame.verb.end] == "boil"
     assert frame.negated and frame.signature() == "not boil(the sauce)"
+
+
+def test_a_negation_inside_an_argument_negates_no_action():
+    text = "Stir the batter until not lumpy and pour it."
+    recipe = parse(text, {text: [("VERB", "Stir"), ("WHAT", "the batter"), ("TIME", "until not lumpy"),
+                                 ("VERB", "pour"), ("WHAT", "it")]})
+    assert [frame.negated for frame in recipe.steps[0].frames] == [False, False]

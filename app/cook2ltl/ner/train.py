@@ -40,6 +40,7 @@ class TrainConfig:
     # Focal loss: few spans of many candidates are entities; plain BCE settles on "nothing anywhere".
     focal_alpha: float = 0.75
     focal_gamma: float = 2.0
+    warmup: float = 0.1  # share of steps with a rising learning rate, so a fresh head is not knocked dead
     max_width: int = 12
     dropout: float = 0.1
     threads: int = 1  # one torch thread trains faster than two on this class of machine
@@ -86,7 +87,7 @@ def train(data_dir: Path, encoder_dir: Path, output_dir: Path, config: TrainConf
     optimizer = torch.optim.AdamW([{"params": encoder, "lr": config.encoder_lr}, {"params": head, "lr": config.head_lr}])
     steps_per_epoch = (len(batches) + config.batch_size - 1) // config.batch_size
     total = steps_per_epoch * config.epochs
-    scheduler = torch.optim.lr_scheduler.LambdaLR(optimizer, lambda step: max(0.0, 1 - step / total))
+    scheduler = torch.optim.lr_scheduler.LambdaLR(optimizer, warmup_then_decay(total, config.warmup))
 
     order = random.Random(config.seed)
     started, step = time.perf_counter(), 0
@@ -116,6 +117,12 @@ def train(data_dir: Path, encoder_dir: Path, output_dir: Path, config: TrainConf
     }
     (output_dir / LABELS_FILE).write_text(json.dumps(report, indent=2))
     return report
+
+
+def warmup_then_decay(total: int, warmup: float):
+    """Learning-rate factor per step: linear up over the warm-up, then linear down to zero."""
+    rising = max(1, int(total * warmup))
+    return lambda step: (step + 1) / rising if step < rising else max(0.0, (total - step) / max(1, total - rising))
 
 
 def _config_json(config: TrainConfig) -> dict:

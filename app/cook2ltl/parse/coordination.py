@@ -6,13 +6,13 @@ import re
 from dataclasses import replace
 from typing import Sequence
 
-from cook2ltl.domain import Connective, Label, Span, Token
+from cook2ltl.domain import Connective, Span, Token
 
 _VERB_SEPARATOR = re.compile(r"\s*,?\s*\b(?:and/or|and then|and|or|then)\b\s*|\s*,\s*|\s*/\s*", re.IGNORECASE)
 _OR = re.compile(r"\bor\b", re.IGNORECASE)
 # A span model may take the negation into the verb ("Do not boil"); the verb is what follows it.
 _LEADING_NEGATION = re.compile(r"^(?:do\s+not|don'?t|do\s+n't|never|not)\s+", re.IGNORECASE)
-NEGATIONS = {"not", "n't", "never", "no"}
+NEGATIONS = {"not", "n't", "never"}
 
 
 def split_verb(span: Span) -> list[tuple[Span, Connective]]:
@@ -38,20 +38,20 @@ def _piece(span: Span, start: int, end: int) -> Span:
 
 def connective_between(left_end: int, right_start: int, tokens: Sequence[Token], arguments: Sequence[Span]) -> Connective:
     """OR when a coordinating "or" that belongs to no argument stands between two actions."""
-    for token in tokens:
-        if left_end <= token.start and token.end <= right_start and token.text.lower() == "or":
-            if token.dep in ("cc", "") and not _inside_any(token, arguments):
-                return Connective.OR
-    return Connective.AND
+    between = _free_tokens(left_end, right_start, tokens, arguments)
+    return Connective.OR if any(t.dep == "cc" and t.text.lower() == "or" for t in between) else Connective.AND
 
 
-def is_negated(segment_start: int, verb: Span, tokens: Sequence[Token]) -> bool:
-    """A negation in front of the verb within its own segment: "Do not overmix", "never stir"."""
-    for token in tokens:
-        if segment_start <= token.start and token.end <= verb.end and token.text.lower() in NEGATIONS:
-            if token.dep in ("neg", "") or token.text.lower() in ("not", "n't", "never"):
-                return True
-    return False
+def is_negated(segment_start: int, verb: Span, tokens: Sequence[Token], arguments: Sequence[Span]) -> bool:
+    """A negation before the verb in its own segment ("Do not overmix", "never stir"), not inside an
+    argument of the previous action ("stir until no longer lumpy")."""
+    before = _free_tokens(segment_start, verb.end, tokens, arguments)
+    return any(t.dep == "neg" or t.text.lower() in NEGATIONS for t in before)
+
+
+def _free_tokens(start: int, end: int, tokens: Sequence[Token], arguments: Sequence[Span]) -> list[Token]:
+    """Tokens within [start, end) that belong to no argument span."""
+    return [t for t in tokens if start <= t.start and t.end <= end and not _inside_any(t, arguments)]
 
 
 def split_objects(span: Span, tokens: Sequence[Token]) -> tuple[list[Span], Connective]:
@@ -76,7 +76,7 @@ def _trimmed(span: Span, start: int, end: int) -> Span:
     text = span.text[start - span.start:end - span.start]
     lead = len(text) - len(text.lstrip())
     text = text.strip()
-    return replace(span, label=Label(span.label), start=start + lead, end=start + lead + len(text), text=text)
+    return replace(span, start=start + lead, end=start + lead + len(text), text=text)
 
 
 def _head(token: Token, tokens: Sequence[Token]) -> Token:

@@ -27,10 +27,10 @@ def build_frames(spans: Sequence[Span], tokens: Sequence[Token]) -> tuple[tuple[
     frames = []
     for index, verb in enumerate(verbs):
         segment_start = verbs[index - 1].end if index else 0
-        frames.append(_frame(verb, owned[index], tokens, is_negated(segment_start, verb, tokens)))
+        frames.append(_frame(verb, owned[index], tokens, is_negated(segment_start, verb, tokens, arguments)))
     links = tuple(
-        verb_links[i] if verb_links[i] == Connective.OR else connective_between(verbs[i].end, verbs[i + 1].start, tokens, arguments)
-        for i in range(len(verbs) - 1)
+        Connective.OR if joined == Connective.OR else connective_between(left.end, right.start, tokens, arguments)
+        for joined, left, right in zip(verb_links, verbs, verbs[1:])
     )
     return tuple(frames), links
 
