@@ -17,7 +17,7 @@ class ScriptedModel:
     prompts: list[str] = field(default_factory=list)
     grammars: list[str] = field(default_factory=list)
 
-    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int) -> Completion:
+    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int, stop=None) -> Completion:
         prompt = static + dynamic
         self.prompts.append(prompt)
         self.grammars.append(grammar)

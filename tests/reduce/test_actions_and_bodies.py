@@ -4,7 +4,7 @@ import pytest
 
 from cook2ltl.domain import Argument, Connective, Frame, Label, Span
 from cook2ltl.reduce.action import actions_of, parameter
-from cook2ltl.reduce.body import bind, instantiate, parametrize, placeholders, read_body
+from cook2ltl.reduce.body import bind, instantiate, loops, parametrize, placeholders, read_body, without_loops
 from cook2ltl.reduce.model import Action, Call
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import LibraryVerb, expand
@@ -24,11 +24,14 @@ def action(verb, *params):
     ("what", "the penne", "penne", "penne"),
     ("what", "2 large eggs", "large_eggs", "large_eggs"),
     ("where", "a medium saucepan", "medium_saucepan", "medium_saucepan"),
+    ("where", "in a saucepan", "saucepan", "saucepan"),
     ("how", "into small pieces", "small_pieces", "small_pieces"),
     ("time", "until cold", "until_cold", "cold"),
     ("time", "30 minutes", "30_minutes", "30_minutes"),
     ("time", "for 5 minutes", "for_5_minutes", "5_minutes"),
     ("temperature", "medium heat", "medium_heat", "medium_heat"),
+    ("time", "20 minutes or until golden", "20_minutes_or_until_golden", "20_minutes"),
+    ("time", "for 5 minutes before serving", "for_5_minutes_before_serving", "5_minutes"),
     ("what", "the cook's knife", "cook_knife", "cook_knife"),
 ])
 def test_arguments_become_identifiers(category, text, name, value):
@@ -88,3 +91,19 @@ def test_library_verbs_expand_to_primitives():
     verbs["loop"] = LibraryVerb("loop", ("what",), "loop($what)")
     assert expand((Call("loop", ("egg",)),), RECIPE, find) is None  # a cycle ends, unexpanded
     assert bind(("what", "what", "where"), ("a", "b", "c")) == {"$what": "a", "$what2": "b", "$where": "c"}
+
+
+def test_a_plan_going_round_in_circles_is_cut():
+    whisk, stir, wait = Call("whisk", ("x",)), Call("stir", ("x",)), Call("wait", ("x", "smooth"))
+    assert without_loops((whisk, stir, whisk, stir, whisk)) == (whisk, stir)
+    assert without_loops((whisk, whisk, whisk)) == (whisk,)
+    assert without_loops((whisk, stir, wait, stir)) == (whisk, stir, wait, stir)
+    assert loops("    stir(x)\n    # again\n    stir(x)\n") and not loops("    stir(x)\n    stir(x")  # unfinished line
+
+
+def test_library_verbs_multiplying_each_other_are_refused():
+    verbs = {name: LibraryVerb(name, ("what",), "\n".join([f"{inner}($what)"] * 8))
+             for name, inner in (("a", "b"), ("b", "stir"))}
+    plan = expand((Call("a", ("soup",)),), RECIPE, lambda verb, arity: verbs.get(verb))
+    assert plan is None  # 64 stirs: more than any real action
+    assert len(expand((Call("b", ("soup",)),), RECIPE, lambda verb, arity: verbs.get(verb))) == 8

@@ -159,3 +159,11 @@ def test_the_translate_command(monkeypatch, tmp_path):
     assert (tmp_path / "library.sqlite").exists()
     missing = runner.invoke(app, ["translate", str(recipe), "--primitives", "nowhere.toml"])
     assert missing.exit_code != 0
+
+
+def test_a_looping_answer_is_cut_before_it_is_cached(library):
+    model = ScriptedModel({"boil": "turn_on(stovetop)\nstir(egg)\nwait(egg == hot)\nstir(egg)\nwait(egg == hot)\nstir(egg)"})
+    text = "Boil the egg."
+    translation, _ = translated(Translator(load_primitives("recipe"), model, library), parsed(text, {text: SPANS[text]}))
+    assert [c.text() for c in translation.steps[0].actions[0].plan] == ["turn_on(stovetop)", "stir(egg)", "wait(egg == hot)"]
+    assert library.entries()[0].body == "turn_on(stovetop)\nstir($what)\nwait($what == hot)"

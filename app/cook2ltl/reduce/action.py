@@ -12,7 +12,9 @@ CATEGORY = {Label.WHAT: "what", Label.WHERE: "where", Label.HOW: "how", Label.TI
 OBJECT_FILLERS = frozenset("a an the some any your its their this that these those each all of rest remaining".split())
 # Leading words of a time or temperature that do not name the state or duration reached.
 MARKERS = frozenset("until till for about around approximately once when after before over at to on in with is are".split())
-# Leading words of a how that link it to the action: "into small pieces", "with olive oil".
+# Words after which a time or temperature goes on with another one: "20 minutes or until golden".
+CLAUSE_ENDS = frozenset("or and before after then while".split())
+# Leading words of a where or how that link it to the action: "in a pot", "with olive oil".
 LINKS = frozenset("into in with on onto to over using by from".split())
 _WORD = re.compile(r"[a-z0-9]+")
 
@@ -41,13 +43,15 @@ def _parameters(frame: Frame) -> tuple[Parameter, ...]:
 
 def parameter(category: str, text: str) -> Parameter:
     words = _WORD.findall(text.lower().replace("'s", ""))
-    if category in ("what", "where"):
+    if category == "what":
         value = _identifier(_strip(words, OBJECT_FILLERS, keep_numbers=False))
         return Parameter(category, text, value, value)
-    if category == "how":
+    if category in ("where", "how"):  # "in a saucepan" is the saucepan
         value = _identifier(_strip(_strip(words, LINKS, True), OBJECT_FILLERS, keep_numbers=False))
         return Parameter(category, text, value, value)
-    return Parameter(category, text, _identifier(words), _identifier(_strip(words, MARKERS, keep_numbers=True)))
+    value = _strip(words, MARKERS, keep_numbers=True)
+    end = next((i for i, word in enumerate(value) if word in CLAUSE_ENDS and i), len(value))
+    return Parameter(category, text, _identifier(words), _identifier(value[:end]))
 
 
 def _strip(words: list[str], fillers: frozenset[str], keep_numbers: bool) -> list[str]:

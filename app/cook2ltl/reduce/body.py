@@ -43,6 +43,26 @@ def read_call(line: str) -> Call | None:
     return Call(name, args) if all(_ARG.match(arg) for arg in args) else None
 
 
+def loops(text: str, longest: int = 4) -> bool:
+    """Whether the last complete lines repeat the ones just before them, as a greedy model going round in
+    circles does ("whisk(x); stir(x); whisk(x); stir(x) …"); comments and the unfinished line are ignored."""
+    lines = [line.strip() for line in text.split("\n")[:-1] if line.strip() and not line.strip().startswith("#")]
+    return any(len(lines) >= 2 * k and lines[-k:] == lines[-2 * k:-k] for k in range(1, longest + 1))
+
+
+def without_loops(calls: tuple[Call, ...]) -> tuple[Call, ...]:
+    """The calls up to where they start repeating themselves."""
+    kept: list[Call] = []
+    for call in calls:
+        kept.append(call)
+        text = "".join(f"{c.text()}\n" for c in kept)
+        if loops(text):
+            for k in range(1, 5):
+                if len(kept) >= 2 * k and kept[-k:] == kept[-2 * k:-k]:
+                    return tuple(kept[:-k])
+    return tuple(kept)
+
+
 def write_body(calls: tuple[Call, ...]) -> str:
     return "\n".join(call.text() for call in calls)
 

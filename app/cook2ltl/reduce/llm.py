@@ -12,7 +12,7 @@ import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Protocol
+from typing import Callable, Protocol
 
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.model import Usage
@@ -32,11 +32,13 @@ class LanguageModel(Protocol):
     """Completes `static + dynamic` under a GBNF grammar, deterministically.
 
     `static` is the part many prompts share (a backend may keep it evaluated); `dynamic` is this prompt's own.
+    `stop`, given the text generated so far, may end the completion early.
     """
 
     name: str
 
-    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int) -> Completion: ...
+    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
+                 stop: Callable[[str], bool] | None = None) -> Completion: ...
 
 
 class LlamaModel:
@@ -58,9 +60,10 @@ class LlamaModel:
         self.restored = False  # whether the last static part came from disk
         self._llama = None
 
-    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int) -> Completion:
+    def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
+                 stop: Callable[[str], bool] | None = None) -> Completion:
         llama = self._loaded()
-        from llama_cpp import LlamaGrammar
+        from llama_cpp import LlamaGrammar, StoppingCriteriaList
 
         started = time.perf_counter()
         try:
@@ -72,9 +75,15 @@ class LlamaModel:
         prefix = llama.tokenize(static.encode())
         tokens = prefix + llama.tokenize(dynamic.encode(), add_bos=False)
         self._keep_only(llama, prefix, static)
+        criteria = None
+        if stop is not None:
+            start = len(tokens)
+            criteria = StoppingCriteriaList([
+                lambda ids, _: stop(llama.detokenize(ids[start:].tolist()).decode("utf-8", errors="ignore"))])
         result = llama.create_completion(
             tokens, max_tokens=max_tokens, temperature=0.0, seed=self.seed, grammar=compiled,
             repeat_penalty=1.0,  # plans rightly repeat objects (pot, pot, pot); a penalty would push them out
+            stopping_criteria=criteria,
         )
         usage = result["usage"]
         return Completion(

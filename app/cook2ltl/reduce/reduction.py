@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
-from cook2ltl.reduce.body import bind, instantiate, read_body
+from cook2ltl.reduce.body import bind, instantiate, loops, read_body, without_loops
 from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
@@ -13,6 +13,7 @@ from cook2ltl.reduce.prompt import build_prompt
 
 TOKENS_PER_LINE = 40  # a call with its comment; the grammar ends the body long before this budget
 MAX_DEPTH = 8  # library verbs calling library verbs; deeper means a cycle
+MAX_PLAN = 60  # primitive calls of one expanded action; more means library verbs multiplying each other
 
 
 @dataclass(frozen=True)
@@ -36,8 +37,9 @@ def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[Li
     vocab = vocabulary(primitives, ((v.verb, v.signature) for v in library), action)
     prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments)
     grammar = to_gbnf(vocab, settings.max_lines, settings.comments)
-    completion = model.complete(prompt.static, prompt.dynamic, grammar, settings.max_lines * TOKENS_PER_LINE)
+    completion = model.complete(prompt.static, prompt.dynamic, grammar, settings.max_lines * TOKENS_PER_LINE, loops)
     calls, unread = read_body(completion.text)
+    calls = without_loops(calls)
     kept = tuple(call for call in calls if admits(vocab, call))[: settings.max_lines]
     dropped = unread + tuple(call.text() for call in calls if not admits(vocab, call))
     return Reduction(action, kept, Source.LLM, completion.usage, dropped, prompt.digest)
@@ -45,7 +47,8 @@ def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[Li
 
 def expand(calls: Sequence[Call], primitives: PrimitiveSet, find: Callable[[str, int], LibraryVerb | None],
            depth: int = 0) -> tuple[Call, ...] | None:
-    """Library verbs in a body replaced by their own bodies, down to primitives; None if something cannot be."""
+    """Library verbs in a body replaced by their own bodies, down to primitives; None if something cannot be
+    (an unknown verb, a cycle, a plan longer than MAX_PLAN)."""
     if depth > MAX_DEPTH:
         return None
     expanded: list[Call] = []
@@ -59,4 +62,4 @@ def expand(calls: Sequence[Call], primitives: PrimitiveSet, find: Callable[[str,
         if inner is None:
             return None
         expanded.extend(inner)
-    return tuple(expanded)
+    return tuple(expanded) if len(expanded) <= MAX_PLAN else None
