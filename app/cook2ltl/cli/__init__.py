@@ -10,6 +10,7 @@ from rich.markup import escape
 
 from cook2ltl.cli.models_command import models_app
 from cook2ltl.cli.parse_command import parse_command
+from cook2ltl.cli.rollout_command import rollout_command
 from cook2ltl.cli.translate_command import translate_command
 from cook2ltl.errors import UserError
 from cook2ltl.ltl.cli import ltl_app
@@ -18,6 +19,7 @@ app = typer.Typer(help="Cooking recipes to LTL task specifications, offline.", n
                   pretty_exceptions_enable=False)
 app.command("parse")(parse_command)
 app.command("translate")(translate_command)
+app.command("rollout")(rollout_command)
 app.add_typer(models_app, name="models")
 app.add_typer(ltl_app, name="ltl")
 

@@ -10,12 +10,14 @@ from dataclasses import replace
 from numbers import Real
 from typing import Any
 
-from .state import KitchenState, Refused
+from .state import KitchenState, Refused, enclosing, is_held_or_carried
 
 GRID_SIZE = 0.25  # THOR's default step, metres
 ROTATE_DEGREES = 90.0
 LOOK_DEGREES = 30.0
 HORIZON_LIMITS = (-30.0, 60.0)  # THOR's default agent: looking up is negative
+REACH = 0.75  # metres between an interactable pose and the object
+POSE_HORIZON = 30.0  # looking down at a counter
 
 
 def _number(action: Mapping[str, Any], key: str, default: float) -> float:
@@ -93,6 +95,37 @@ def _look(sign: float):
     return look
 
 
+def interactable_poses(state: KitchenState, action):
+    """THOR's GetInteractablePoses: where the agent can stand to act on the object.
+
+    Without a floor plan the poses are the four sides of the object at arm's
+    reach, facing it; as in THOR, an object shut in a closed receptacle has none.
+    """
+    object_id = action.get("objectId")
+    if not object_id:
+        raise Refused("GetInteractablePoses needs an objectId", "MissingArguments")
+    thing = state.thing(object_id)
+    if thing is None:
+        raise Refused(f"No object with objectId {object_id!r} in {state.scene}")
+    agent = state.agent
+    if is_held_or_carried(state, object_id):
+        x, y, z = agent.position
+        return state, [_pose(x, y, z, agent.rotation, agent.horizon, agent.standing)]
+    if enclosing(state, object_id) is not None:
+        return state, []
+    ox, _, oz = thing.position
+    y = agent.position[1]
+    poses = []
+    for dx, dz in ((0.0, -REACH), (REACH, 0.0), (0.0, REACH), (-REACH, 0.0)):
+        facing = math.degrees(math.atan2(-dx, -dz)) % 360.0  # THOR's yaw: 0 faces +z, 90 faces +x
+        poses.append(_pose(ox + dx, y, oz + dz, facing, POSE_HORIZON, True))
+    return state, poses
+
+
+def _pose(x: float, y: float, z: float, rotation: float, horizon: float, standing: bool) -> dict[str, Any]:
+    return {"x": x, "y": y, "z": z, "rotation": rotation, "standing": standing, "horizon": horizon}
+
+
 def _no_op(state: KitchenState, action):
     return state, None
 
@@ -100,6 +133,7 @@ def _no_op(state: KitchenState, action):
 AGENT_ACTIONS = {
     "Teleport": teleport,
     "TeleportFull": teleport_full,
+    "GetInteractablePoses": interactable_poses,
     "MoveAhead": _move(0.0, 1.0),
     "MoveBack": _move(0.0, -1.0),
     "MoveRight": _move(1.0, 0.0),

@@ -9,6 +9,7 @@ in reach (THOR's `forceAction=True` skips even that check).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import replace
 from typing import Any, NamedTuple
@@ -42,27 +43,50 @@ def apply(state: KitchenState, action: Mapping[str, Any]) -> Result:
 
 
 def settle(state: KitchenState) -> KitchenState:
-    """Let heat and cold act: what sits in a running heat source gets Hot (and
-    cooked, if cookable; a running coffee machine fills its cup), what sits in a
-    cold source gets Cold. Things keep their temperature once taken out."""
+    """Let heat, cold and water act: what sits in a running heat source gets Hot
+    (and cooked, if cookable; a running coffee machine fills its cup), what sits
+    in a cold source gets Cold, what sits in a sink basin under a running faucet
+    is rinsed clean and, if it holds liquid, filled with water. Things keep their
+    temperature once taken out."""
     hot = {oid for oid, t in state.objects.items() if t.can("isHeatSource") and t.is_toggled}
     cold = {oid for oid, t in state.objects.items() if t.can("isColdSource")}
+    wet = _under_running_water(state)
     changed = []
     for thing in state.objects.values():
         outer = list(ancestors(state, thing.object_id))
         heaters = [o for o in outer if o.object_id in hot]
+        updated = thing
         if heaters:
             updated = replace(thing, temperature="Hot", is_cooked=thing.is_cooked or thing.can("cookable"))
             brews = any(h.object_type == "CoffeeMachine" for h in heaters)
-            if brews and thing.can("canFillWithLiquid") and not thing.is_filled and not thing.is_broken:
+            if brews and _fillable(thing):
                 updated = replace(updated, is_filled=True, fill_liquid="coffee")
         elif any(o.object_id in cold for o in outer):
             updated = replace(thing, temperature="Cold")
-        else:
-            continue
+        if any(o.object_id in wet for o in outer):
+            updated = replace(updated, is_dirty=False)
+            if _fillable(updated):
+                updated = replace(updated, is_filled=True, fill_liquid="water")
         if updated != thing:
             changed.append(updated)
     return state.evolve(objects=state.with_things(*changed)) if changed else state
+
+
+def _fillable(thing: Thing) -> bool:
+    return thing.can("canFillWithLiquid") and not thing.is_filled and not thing.is_broken
+
+
+def _under_running_water(state: KitchenState) -> set[str]:
+    """The sink basins whose faucet runs. The scenes do not link the two, so a
+    basin's faucet is the nearest one."""
+    faucets = [t for t in state.objects.values() if t.object_type == "Faucet"]
+    running = set()
+    for basin in state.objects.values():
+        if basin.object_type == "SinkBasin" and faucets:
+            nearest = min(faucets, key=lambda f: math.dist(f.position, basin.position))
+            if nearest.is_toggled:
+                running.add(basin.object_id)
+    return running
 
 
 # --- argument and precondition helpers -------------------------------------
@@ -276,6 +300,14 @@ def empty(state, action):
     return _changed(state, replace(thing, is_filled=False, fill_liquid=None)), None
 
 
+def use_up(state, action):
+    thing = target(state, action)
+    need(thing.can("canBeUsedUp"), f"{thing.object_id} cannot be used up")
+    need(not thing.is_used_up, f"{thing.object_id} is already used up")
+    reachable(state, thing, action)
+    return _changed(state, replace(thing, is_used_up=True)), None
+
+
 def dirty(state, action):
     return _soil(state, action, dirty=True)
 
@@ -309,6 +341,7 @@ HANDLERS: dict[str, Handler] = {
     "CookObject": cook,
     "FillObjectWithLiquid": fill,
     "EmptyLiquidFromObject": empty,
+    "UseUpObject": use_up,
     "DirtyObject": dirty,
     "CleanObject": clean,
 }

@@ -1,0 +1,181 @@
+"""`cook2ltl rollout`: a task planned by Algorithm 1, or a formula, executed in a kitchen through ai2thor's
+Controller, with what is satisfied and what remains after every action, the verdict and the task's goal."""
+
+from __future__ import annotations
+
+import json
+from enum import StrEnum
+from pathlib import Path
+from typing import Optional
+
+import typer
+from rich.console import Console
+from rich.text import Text
+
+from cook2ltl.errors import UserError
+from cook2ltl.pipeline import Variant
+from cook2ltl.reduce.llm import DEFAULT_MODEL
+
+DEFAULT_SCENE = "FloorPlan1"
+VERDICT_STYLE = {"satisfied": "bold green", "presumably_true": "green", "presumably_false": "yellow",
+                 "violated": "bold red"}
+
+
+class Backend(StrEnum):
+    EMBEDDED = "embedded"
+    THOR = "thor"
+    AUTO = "auto"
+
+
+def rollout_command(
+    target: Optional[str] = typer.Argument(None, metavar="TASK|FORMULA", show_default=False,
+                                           help="A task's id or instruction (see --list), or an LTL formula."),
+    scene: Optional[str] = typer.Option(None, "--scene", help="FloorPlan1 … FloorPlan30 (default: the task's own, "
+                                        f"else {DEFAULT_SCENE})."),
+    backend: Backend = typer.Option(Backend.EMBEDDED, "--backend", case_sensitive=False,
+                                    help="embedded kitchen, a real AI2-THOR build, or auto (THOR if installed)."),
+    reference: bool = typer.Option(False, "--reference", help="Run the task's hand-written reference plan instead "
+                                   "of planning it."),
+    model: str = typer.Option(DEFAULT_MODEL, "--model", help="Language model of the manifest (`cook2ltl models`)."),
+    library: Optional[Path] = typer.Option(None, "--library", help="Action library file (default: $COOK2LTL_LIBRARY,"
+                                           " else library.sqlite in the user data folder)."),
+    variant: Variant = typer.Option(Variant.AR_LIBRARY, "--variant", case_sensitive=False,
+                                    help="AR passes primitives through; AR+A also reuses and grows the library."),
+    list_tasks: bool = typer.Option(False, "--list", help="List the tasks and exit."),
+    as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
+) -> None:
+    """Execute a task or formula in an AI2-THOR kitchen and follow the formula's progress action by action.
+
+    Exits with 0 when the task's goal holds at the end (for a formula: when the formula does), else 1.
+    """
+    from cook2ltl.kitchen.launcher import start_kitchen
+    from cook2ltl.kitchen.planning import open_planner
+    from cook2ltl.kitchen.trial import TrialDone, run_trial, trial_json
+
+    if list_tasks:
+        show_tasks(Console(), as_json)
+        return
+    if target is None:
+        raise UserError("No task or formula given.", "name a task (cook2ltl rollout --list) or write a formula.")
+    task, formula = read_target(target, reference)
+    scene = _scene(scene or (task.scene if task else DEFAULT_SCENE))
+    errors = Console(stderr=True)
+    with errors.status(f"starting the {backend.value} kitchen …"):
+        controller = start_kitchen(scene, backend.value)
+    try:
+        plan = None
+        if formula is None:
+            with errors.status(f"planning “{task.instruction}” with {model} …"), \
+                    open_planner(model, library, variant) as planner:
+                plan = planner.plan(task.instruction)
+            formula = plan.formula
+        console = None if as_json else Console()
+        if console is not None:
+            show_header(console, task, plan, formula, scene, backend.value)
+        trial = None
+        for event in run_trial(controller, formula, scene, task, plan):
+            if isinstance(event, TrialDone):
+                trial = event.trial
+            elif console is not None:
+                show_event(console, event)
+    finally:
+        controller.stop()
+    if as_json:
+        typer.echo(json.dumps(trial_json(trial, backend.value), ensure_ascii=False, indent=2))
+    else:
+        show_outcome(console, trial)
+    raise typer.Exit(0 if trial.success else 1)
+
+
+def read_target(target: str, reference: bool):
+    """(task or None, formula or None): a task is planned later unless its reference plan is asked for."""
+    from cook2ltl.kitchen.tasks import find_task, load_tasks, reference_formula
+    from cook2ltl.ltl.parser import LTLSyntaxError, parse
+
+    task = find_task(target)
+    if task is not None:
+        return task, reference_formula(task) if reference else None
+    ids = ", ".join(t.id for t in load_tasks())
+    if reference:
+        raise UserError(f"--reference needs a task; {target!r} is not one.", f"tasks: {ids}.")
+    try:
+        return None, parse(target)
+    except LTLSyntaxError as error:
+        raise UserError(f"{target!r} is neither a task nor a formula ({error}).",
+                        f"tasks: {ids}; or a formula such as 'F(pick_up(apple) & F put(apple, fridge))'.") from None
+
+
+def _scene(name: str) -> str:
+    from cook2ltl.kitchen.scenes import UnknownScene, canonical_scene
+
+    try:
+        return canonical_scene(name)
+    except UnknownScene as error:
+        raise UserError(str(error), "kitchens are FloorPlan1 … FloorPlan30.") from None
+
+
+def show_tasks(console: Console, as_json: bool) -> None:
+    from cook2ltl.kitchen.tasks import load_tasks, task_json
+
+    tasks = load_tasks()
+    if as_json:
+        typer.echo(json.dumps([task_json(t) for t in tasks], ensure_ascii=False, indent=2))
+        return
+    for task in tasks:
+        goal = "; ".join(c.text() for c in task.goal)
+        console.print(f"[bold]{task.id:<20}[/bold] {task.instruction:<34} [dim]{task.scene:<12} {task.category:<7}"
+                      f" {goal}[/dim]", highlight=False)
+
+
+def show_header(console: Console, task, plan, formula, scene: str, backend: str) -> None:
+    from cook2ltl.ltl.printer import to_unicode
+
+    title = f"task {task.id} · “{task.instruction}”" if task else "formula"
+    console.print(f"[bold]{title}[/bold] [dim]· {scene} · {backend} kitchen[/dim]", highlight=False)
+    if task is not None:
+        console.print(Text("goal  ", style="dim") + Text("; ".join(c.text() for c in task.goal)))
+    if plan is not None:
+        calls = " · ".join(call.text() for call in plan.calls) or "(no admissible plan)"
+        console.print(Text("plan  ", style="dim") + Text(calls) + Text(
+            f"   [{plan.model}, {plan.variant.value}: {', '.join(plan.sources)}; {plan.seconds:.1f} s]", style="dim"))
+        for problem in plan.problems:
+            console.print(f"      [bold red]![/bold red] {problem}", highlight=False)
+    console.print(Text("φ     ", style="dim") + Text(to_unicode(formula), style="yellow"), soft_wrap=True)
+
+
+def show_event(console: Console, event) -> None:
+    from cook2ltl.kitchen.rollout import ActionRefused, Started, Stepped
+    from cook2ltl.ltl.printer import to_unicode
+
+    if isinstance(event, Started) and event.unobservable:
+        never = ", ".join(a.text for a in event.unobservable)
+        console.print(f"[yellow]the kitchen cannot report {never}: it never holds[/yellow]", highlight=False)
+    elif isinstance(event, ActionRefused):
+        console.print(Text("    ✗ ", style="bold red") + Text(event.attempt.error))
+    elif isinstance(event, Stepped):
+        step = event.step
+        line = Text(f"{step.index:>3} ", style="dim") + Text("✓ ", style="green") + Text(step.attempt.atom.text,
+                                                                                        style="bold")
+        if step.facts:
+            line += Text("   now " + ", ".join(sorted(a.text for a in step.facts)), style="cyan")
+        console.print(line)
+        remaining = Text("      remaining ", style="dim") + Text(to_unicode(step.remaining))
+        remaining += Text(f"   {step.verdict.value.replace('_', ' ')}", style=VERDICT_STYLE[step.verdict.value])
+        console.print(remaining, soft_wrap=True)
+
+
+def show_outcome(console: Console, trial) -> None:
+    from cook2ltl.kitchen.trial import explain
+
+    result = trial.rollout
+    verdict = result.verdict.value
+    console.print(Text("verdict ", style="dim") + Text(verdict.replace("_", " "), style=VERDICT_STYLE[verdict])
+                  + Text(f" — {explain(result)}", style="dim"))
+    if trial.goal is not None:
+        for condition, met in trial.goal.conditions:
+            mark = Text("✓ ", style="green") if met else Text("✗ ", style="bold red")
+            console.print(Text("goal    ", style="dim") + mark + Text(condition.text()))
+    planning = f" · {trial.plan.seconds:.1f} s planning" if trial.plan else ""
+    outcome = Text("success", style="bold green") if trial.success else Text("failure", style="bold red")
+    console.print(outcome + Text(f" · {len(result.steps)} actions · {result.seconds:.2f} s in the kitchen{planning}",
+                                 style="dim"))

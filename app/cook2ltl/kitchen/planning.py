@@ -1,0 +1,94 @@
+"""A task's instruction planned by Algorithm 1 with the AI2-THOR primitives: the formula a rollout executes.
+
+A thin adapter over `cook2ltl.pipeline`: parse the instruction, reduce its
+actions (primitive, library or model), keep the whole formula and the plan
+lines for display. `open_planner` builds the production backends (GLiNER,
+spaCy, llama.cpp, the SQLite library) once, so a benchmark plans many times.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..ltl.ast import Formula
+from ..parse.backends import DependencyParser, SpanExtractor
+from ..pipeline import Finished, Stats, Translator, Variant, run
+from ..reduce.model import Call
+
+PRIMITIVES = "ai2thor"
+
+
+@dataclass(frozen=True)
+class Plan:
+    instruction: str
+    formula: Formula
+    calls: tuple[Call, ...]  # every action's primitive plan, in order
+    sources: tuple[str, ...]  # per action: primitive, library or llm
+    problems: tuple[str, ...]
+    model: str
+    variant: Variant
+    stats: Stats
+    seconds: float
+
+
+@dataclass(frozen=True)
+class Planner:
+    translator: Translator
+    spans: SpanExtractor
+    dependencies: DependencyParser
+
+    def plan(self, instruction: str) -> Plan:
+        started = time.perf_counter()
+        events = run(instruction, self.spans, self.dependencies, self.translator)
+        translation = next(e.translation for e in events if isinstance(e, Finished))
+        results = [result for step in translation.steps for result in step.actions]
+        return Plan(
+            instruction,
+            translation.formula,
+            tuple(call for result in results for call in result.plan),
+            tuple(result.reduction.source.value for result in results),
+            tuple(problem for step in translation.steps for problem in step.problems),
+            translation.model,
+            translation.variant,
+            translation.stats,
+            time.perf_counter() - started,
+        )
+
+
+@contextmanager
+def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR_LIBRARY) -> Iterator[Planner]:
+    """The production planner; the library file (default: the user's) is closed on exit."""
+    from .. import paths
+    from ..library import Library
+    from ..reduce.llm import load_model
+    from ..reduce.primitives import load_primitives
+    from ..settings import load_settings
+    from ..stack import dependency_parser, span_extractor
+
+    primitives = load_primitives(PRIMITIVES)
+    language_model = load_model(model)
+    store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
+    try:
+        translator = Translator(primitives, language_model, store, variant)
+        yield Planner(translator, span_extractor(load_settings()), dependency_parser())
+    finally:
+        if store is not None:
+            store.close()
+
+
+def plan_json(plan: Plan) -> dict:
+    return {
+        "instruction": plan.instruction,
+        "model": plan.model,
+        "variant": plan.variant.value,
+        "calls": [call.text() for call in plan.calls],
+        "sources": list(plan.sources),
+        "problems": list(plan.problems),
+        "llm_calls": plan.stats.llm_calls,
+        "library_hits": plan.stats.library_hits,
+        "seconds": round(plan.seconds, 3),
+    }

@@ -1,0 +1,84 @@
+"""One trial: a formula rolled out in a freshly reset kitchen, and for a task, its goal checked after.
+
+Shared by `cook2ltl rollout` and bench/rollout_bench.py. The events are the
+rollout's own, then `TrialDone`; a display or a UI worker forwards them.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from ..ltl.ast import Formula
+from .executor import Kitchen
+from .planning import Plan, plan_json
+from .rollout import Event, Finished, Limits, Rollout, Stop, rollout, rollout_json
+from .tasks import GoalCheck, Task, check_goal, goal_json, preferred_objects, set_up, task_json
+
+
+@dataclass(frozen=True)
+class Trial:
+    task: Task | None
+    plan: Plan | None  # None for a formula given by hand or a task's reference plan
+    rollout: Rollout
+    goal: GoalCheck | None  # None without a task
+
+    @property
+    def success(self) -> bool:
+        """The paper's success: the task's goal conditions hold; without a task, the formula does."""
+        return self.goal.met if self.goal is not None else self.rollout.verdict.holds
+
+    @property
+    def seconds(self) -> float:
+        return self.rollout.seconds + (self.plan.seconds if self.plan else 0.0)
+
+
+@dataclass(frozen=True)
+class TrialDone:
+    trial: Trial
+
+
+def run_trial(kitchen: Kitchen, formula: Formula, scene: str, task: Task | None = None, plan: Plan | None = None,
+              limits: Limits = Limits(), cancel: threading.Event | None = None) -> Iterator[Event | TrialDone]:
+    """Reset the kitchen to `scene`, set the task up, roll the formula out, check the goal."""
+    kitchen.reset(scene)
+    if task is not None:
+        set_up(kitchen, task)
+    preferred = preferred_objects(task, kitchen.last_event.metadata["objects"]) if task else frozenset()
+    result = None
+    for event in rollout(kitchen, formula, preferred, limits, cancel):
+        if isinstance(event, Finished):
+            result = event.rollout
+        yield event
+    goal = check_goal(task, kitchen.last_event.metadata["objects"]) if task else None
+    yield TrialDone(Trial(task, plan, result, goal))
+
+
+def explain(result: Rollout) -> str:
+    """Why the rollout ended, in a sentence."""
+    if result.stop == Stop.FAILED:
+        return result.failures[-1].error
+    if result.stop == Stop.STUCK and result.unobservable:
+        return f"no action makes progress; the kitchen cannot report {', '.join(a.text for a in result.unobservable)}"
+    return {
+        Stop.SATISFIED: "the trace satisfies the formula",
+        Stop.VIOLATED: "the trace violates the formula",
+        Stop.WAITED: "waited, but the condition never held",
+        Stop.STUCK: "no action of the formula makes progress",
+        Stop.STEP_LIMIT: "too many steps",
+        Stop.CANCELLED: "cancelled",
+    }[result.stop]
+
+
+def trial_json(trial: Trial, backend: str) -> dict:
+    return {
+        "task": task_json(trial.task) if trial.task else None,
+        "backend": backend,
+        "plan": plan_json(trial.plan) if trial.plan else None,
+        **rollout_json(trial.rollout),
+        "reason": explain(trial.rollout),
+        "goal": goal_json(trial.goal) if trial.goal else None,
+        "success": trial.success,
+        "seconds_total": round(trial.seconds, 3),
+    }
