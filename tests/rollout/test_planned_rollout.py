@@ -108,6 +108,8 @@ def test_the_command_plans_runs_and_reports_json(scripted_planner, launched):
     assert report["trace"][4]["facts"] == ["hot(potato)"] and report["trace"][4]["remaining"] == 'F"turn_off(microwave)"'
     assert report["trace"][0]["thor"][-1]["action"] == "PickupObject"
     assert report["verdict"] == "satisfied" and report["goal"]["met"] and report["success"]
+    assert report["seconds"]["total"] == pytest.approx(report["seconds"]["plan"] + report["seconds"]["rollout"],
+                                                       abs=0.01)
     assert [stopped(c) for c in launched] == [True]
 
 

@@ -151,8 +151,9 @@ def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = froz
         waits = 0 if useful else waits + 1
         objects = kitchen.last_event.metadata["objects"]
         facts = true_facts(predicates, objects, binding, waited=done.atom.name == WAIT)
-        remaining = progress(remaining, facts | {done.atom})
-        met = met | ((facts | {done.atom}) & formula.atoms)
+        step = facts | {done.atom}
+        remaining = progress(remaining, step)
+        met = met | (step & formula.atoms)
         steps.append(TraceStep(len(steps) + 1, done, facts, remaining, verdict(remaining), met))
         yield Stepped(steps[-1])
     yield Finished(Rollout(formula, scene, tuple(steps), tuple(failures), stop, verdict(remaining), binding,
@@ -235,7 +236,6 @@ def rollout_json(result: Rollout) -> dict:
         "verdict": result.verdict.value,
         "bindings": dict(result.binding.objects),
         "unobservable": [a.text for a in result.unobservable],
-        "seconds": round(result.seconds, 4),
     }
 
 

@@ -80,5 +80,6 @@ def trial_json(trial: Trial, backend: str) -> dict:
         "reason": explain(trial.rollout),
         "goal": goal_json(trial.goal) if trial.goal else None,
         "success": trial.success,
-        "seconds_total": round(trial.seconds, 3),
+        "seconds": {"plan": round(trial.plan.seconds, 3) if trial.plan else 0.0,
+                    "rollout": round(trial.rollout.seconds, 4), "total": round(trial.seconds, 3)},
     }
