@@ -26,6 +26,7 @@ def action(verb, *params):
     ("where", "a medium saucepan", "medium_saucepan", "medium_saucepan"),
     ("where", "in a saucepan", "saucepan", "saucepan"),
     ("how", "into small pieces", "small_pieces", "small_pieces"),
+    ("how", "375 F", "375_f", "375_f"),
     ("time", "until cold", "until_cold", "cold"),
     ("time", "30 minutes", "30_minutes", "30_minutes"),
     ("time", "for 5 minutes", "for_5_minutes", "5_minutes"),

@@ -46,8 +46,8 @@ def parameter(category: str, text: str) -> Parameter:
     if category == "what":
         value = _identifier(_strip(words, OBJECT_FILLERS, keep_numbers=False))
         return Parameter(category, text, value, value)
-    if category in ("where", "how"):  # "in a saucepan" is the saucepan
-        value = _identifier(_strip(_strip(words, LINKS, True), OBJECT_FILLERS, keep_numbers=False))
+    if category in ("where", "how"):  # "in a saucepan" is the saucepan; a how may be "375 F"
+        value = _identifier(_strip(_strip(words, LINKS, True), OBJECT_FILLERS, keep_numbers=category == "how"))
         return Parameter(category, text, value, value)
     value = _strip(words, MARKERS, keep_numbers=True)
     end = next((i for i, word in enumerate(value) if word in CLAUSE_ENDS and i), len(value))
