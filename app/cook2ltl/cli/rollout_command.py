@@ -77,7 +77,7 @@ def rollout_command(
             if isinstance(event, TrialDone):
                 trial = event.trial
             elif console is not None:
-                show_event(console, event)
+                show_event(console, event, len(formula.atoms))
     finally:
         controller.stop()
     if as_json:
@@ -124,7 +124,7 @@ def show_tasks(console: Console, as_json: bool) -> None:
     for task in tasks:
         goal = "; ".join(c.text() for c in task.goal)
         console.print(f"[bold]{task.id:<20}[/bold] {task.instruction:<34} [dim]{task.scene:<12} {task.category:<7}"
-                      f" {goal}[/dim]", highlight=False)
+                      f" {goal}[/dim]", highlight=False, soft_wrap=True)
 
 
 def show_header(console: Console, task, plan, formula, scene: str, backend: str) -> None:
@@ -143,7 +143,8 @@ def show_header(console: Console, task, plan, formula, scene: str, backend: str)
     console.print(Text("φ     ", style="dim") + Text(to_unicode(formula), style="yellow"), soft_wrap=True)
 
 
-def show_event(console: Console, event) -> None:
+def show_event(console: Console, event, atoms: int) -> None:
+    """One rollout event as it happens; `atoms` is how many atoms the formula has."""
     from cook2ltl.kitchen.rollout import ActionRefused, Started, Stepped
     from cook2ltl.ltl.printer import to_unicode
 
@@ -156,6 +157,7 @@ def show_event(console: Console, event) -> None:
         step = event.step
         line = Text(f"{step.index:>3} ", style="dim") + Text("✓ ", style="green") + Text(step.attempt.atom.text,
                                                                                         style="bold")
+        line += Text(f"   {len(step.met)}/{atoms} atoms met", style="dim")
         if step.facts:
             line += Text("   now " + ", ".join(sorted(a.text for a in step.facts)), style="cyan")
         console.print(line)
