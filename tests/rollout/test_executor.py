@@ -5,7 +5,7 @@ import pytest
 
 from cook2ltl.errors import UserError
 from cook2ltl.kitchen.facts import PREDICATES
-from cook2ltl.kitchen.names import Binding, UnknownObject
+from cook2ltl.kitchen.names import Binding, UnknownObject, resolve
 from cook2ltl.kitchen.rollout import ARITY, ActionRefused, Finished, Limits, Started, Stop, rollout
 from cook2ltl.ltl import Atom, Verdict, monitor, parse, to_spot
 from cook2ltl.reduce.primitives import load_primitives
@@ -172,3 +172,12 @@ def test_the_executor_covers_the_ai2thor_primitive_set():
     primitives = load_primitives("ai2thor")
     assert {p.name: p.object_arity for p in primitives.primitives} == ARITY
     assert set(primitives.states) <= set(PREDICATES)  # every state a wait may wait for can be observed
+
+
+def test_a_cut_object_thor_keeps_beside_its_pieces_is_not_chosen():
+    objects = [
+        {"objectId": "Tomato|1", "objectType": "Tomato", "isSliced": True, "distance": 0.5},
+        {"objectId": "Tomato|1|TomatoSliced_0", "objectType": "TomatoSliced", "distance": 0.9},
+    ]
+    chosen, binding = resolve("tomato", objects, Binding().bind("tomato", "Tomato|1"))
+    assert chosen == "Tomato|1|TomatoSliced_0" and binding.objects == {"tomato": "Tomato|1"}

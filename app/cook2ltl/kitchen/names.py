@@ -119,10 +119,10 @@ def resolve(name: str, objects: Sequence[Obj], binding: Binding, preferred: froz
             scene: str = "the kitchen") -> tuple[str, Binding]:
     """The objectId `name` stands for, and the binding that remembers it.
 
-    Among several candidates: the one in hand, then one the task's goal names,
-    then one that switches or holds something already bound (the knob of the
-    burner in use, the burner under the pan), then one not shut away, then the
-    first type for the name, then the nearer.
+    Among several candidates: the one in hand, then one not already cut, then
+    one the task's goal names, then one that switches or holds something
+    already bound (the knob of the burner in use, the burner under the pan),
+    then one not shut away, then the first type for the name, then the nearer.
     """
     candidates = objects_named(name, objects, binding)
     if not candidates:
@@ -136,8 +136,9 @@ def resolve(name: str, objects: Sequence[Obj], binding: Binding, preferred: froz
     def rank(o: Obj) -> tuple:
         related = bool((set(o.get("controlledObjects") or ()) | set(o.get("receptacleObjectIds") or ())) & bound)
         kind = types.index(o["objectType"]) if o["objectType"] in types else len(types)
-        return (not o.get("isPickedUp"), o["objectId"] not in preferred, not related, o["objectId"] in shut, kind,
-                o.get("distance", 0.0), o["objectId"])
+        # A real THOR build may keep a cut object beside its pieces, flagged isSliced: the pieces come first.
+        return (not o.get("isPickedUp"), bool(o.get("isSliced")), o["objectId"] not in preferred, not related,
+                o["objectId"] in shut, kind, o.get("distance", 0.0), o["objectId"])
 
     chosen = min(candidates, key=rank)["objectId"]
     if name in binding.objects:
