@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import time
 from pathlib import Path
 from typing import Optional
 
@@ -46,18 +47,37 @@ def provision_command(
     if unknown:
         raise typer.BadParameter(f"unknown model(s): {', '.join(sorted(unknown))}; known: {', '.join(manifest)}")
     chosen = [entry for name, entry in manifest.items() if not names or name in names]
+    console = Console(stderr=True)
+    events = provision(chosen, force=force)
+    if console.is_terminal:
+        _show_live(events, console)
+    else:
+        _show_milestones(events, console)
+
+
+def _show_live(events, console: Console) -> None:
     columns = (TextColumn("{task.fields[model]:<20}"), BarColumn(), MofNCompleteColumn(),
                TimeElapsedColumn(), TextColumn("{task.description}"))
-    with Progress(*columns, console=Console(stderr=True)) as progress:
+    with Progress(*columns, console=console) as progress:
         tasks = {}
-        for event in provision(chosen, force=force):
+        for event in events:
             if event.model not in tasks:
                 tasks[event.model] = progress.add_task(event.message, model=event.model, total=None)
-            task = tasks[event.model]
-            if event.finished:
-                progress.update(task, description=event.message, total=1, completed=1)
-            else:
-                progress.update(task, description=event.message, total=event.total or None, completed=event.done)
+            total = 1 if event.finished else event.total or None
+            done = 1 if event.finished else event.done
+            progress.update(tasks[event.model], description=event.message, total=total, completed=done)
+
+
+def _show_milestones(events, console: Console) -> None:
+    """In a log (CI, make without a terminal) a line per tenth of the work, not a redrawn bar."""
+    started, shown = time.perf_counter(), {}
+    for event in events:
+        tenth = 10 * event.done // event.total if event.total else -1
+        if event.finished or shown.get(event.model) != tenth:
+            shown[event.model] = tenth
+            progress = f" {event.done}/{event.total}" if event.total else ""
+            console.print(f"[{time.perf_counter() - started:6.0f} s] {event.model}: {event.message}{progress}",
+                          highlight=False, markup=False)
 
 
 @models_app.command("eval-ner")
