@@ -1,15 +1,6 @@
-"""Integration tests run the real provisioned models; `make test` provisions them first."""
-
 import pytest
 
-from cook2ltl.models.manifest import State, load_manifest, state_of
-
-
-def require_models(*names: str) -> None:
-    manifest = load_manifest()
-    missing = [name for name in names if state_of(manifest[name], verify_hash=False) != State.READY]
-    if missing:
-        pytest.fail(f"models not provisioned: {', '.join(missing)}; run `make models`")
+from tests.models_required import require_models
 
 
 @pytest.fixture(scope="session")

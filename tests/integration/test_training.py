@@ -8,7 +8,7 @@ from cook2ltl.models.manifest import load_manifest, model_path
 from cook2ltl.ner.train import TrainConfig, train
 from cook2ltl.paths import models_dir
 
-from .conftest import require_models
+from tests.models_required import require_models
 
 
 def losses(data: Path, output: Path) -> list[float]:
