@@ -83,3 +83,27 @@ def test_a_broken_manifest_is_a_user_error(tmp_path):
     (tmp_path / "models.toml").write_text('[x]\nrole = "r"\nsource = "pip"\nlicence = "MIT"\ncolour = "red"\n')
     with pytest.raises(UserError, match="colour"):
         load_manifest(tmp_path)
+
+
+def test_training_replaces_superseded_checkpoints_and_leaves_no_partial(cache, monkeypatch):
+    entry = ModelEntry(name="ner", role="test", source=Source.TRAIN, licence="MIT", encoder="enc", data="training")
+    encoder = ModelEntry(name="enc", role="test", source=Source.PIP, licence="MIT", module="json", check="x")
+    monkeypatch.setattr(provisioning, "load_manifest", lambda: {"enc": encoder})
+    monkeypatch.setattr(provisioning, "state_of", lambda e: State.READY if e is encoder else State.MISSING)
+    monkeypatch.setattr(provisioning, "model_path", lambda e: cache / ("enc" if e is encoder else "ner-new"))
+    old = cache / "ner-old"
+    old.mkdir(parents=True)
+    (old / STAMP).write_text("digest")
+
+    def fake_train(data, encoder_dir, output, config):
+        from cook2ltl.ner.train import TrainingProgress
+
+        output.mkdir(parents=True)
+        (output / "weights").write_bytes(b"trained")
+        yield TrainingProgress(epoch=1, step=1, total_steps=1, loss=0.5, elapsed=0.1)
+
+    monkeypatch.setattr("cook2ltl.ner.train.train", fake_train)
+    events = list(provisioning._train(entry))
+    assert events[-1].done == 1 and "epoch 1" in events[-1].message
+    assert (cache / "ner-new" / "weights").exists() and (cache / "ner-new" / STAMP).exists()
+    assert not old.exists() and not (cache / "ner-new.partial").exists()

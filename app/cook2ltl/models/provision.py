@@ -132,6 +132,14 @@ def _train(entry: ModelEntry) -> Iterator[Event]:
     (partial / STAMP).write_text(checkpoint_digest(partial))
     shutil.rmtree(target, ignore_errors=True)
     partial.replace(target)
+    _remove_superseded(target, entry.name)
+
+
+def _remove_superseded(current: Path, name: str) -> None:
+    """Checkpoints trained from older data or recipes can never be used again: free their space."""
+    for old in current.parent.glob(f"{name}-*"):
+        if old != current and (old / STAMP).exists():
+            shutil.rmtree(old)
 
 
 _FETCHERS = {
