@@ -15,7 +15,7 @@ def test_one_frame_per_action_with_its_arguments():
     text = "Cook the penne in a pot for 2 minutes, then drain it over low heat."
     recipe = parse(text, {text: [("VERB", "Cook"), ("WHAT", "the penne"), ("WHERE", "a pot"), ("TIME", "2 minutes"),
                                  ("VERB", "drain"), ("WHAT", "it"), ("TEMP", "low heat")]})
-    assert signatures(recipe) == [["cook(the penne, a pot, 2 minutes)", "drain(it, low heat)"]]
+    assert signatures(recipe) == [["cook(the penne, a pot, 2 minutes)", "drain(the penne, low heat)"]]
     assert recipe.steps[0].links == (Connective.AND,)
 
 
@@ -114,3 +114,16 @@ def test_a_negation_inside_an_argument_negates_no_action():
     recipe = parse(text, {text: [("VERB", "Stir"), ("WHAT", "the batter"), ("TIME", "until not lumpy"),
                                  ("VERB", "pour"), ("WHAT", "it")]})
     assert [frame.negated for frame in recipe.steps[0].frames] == [False, False]
+
+
+def test_a_pronoun_object_is_resolved_like_a_missing_one():
+    text = "Drain the pasta and rinse it."
+    recipe = parse(text, {text: [("VERB", "Drain"), ("WHAT", "the pasta"), ("VERB", "rinse"), ("WHAT", "it")]})
+    rinse = recipe.steps[0].frames[1]
+    assert [(a.span.text, a.inferred) for a in rinse.what] == [("the pasta", True)]
+
+
+def test_a_pronoun_with_nothing_before_it_stays():
+    text = "Rinse it."
+    recipe = parse(text, {text: [("VERB", "Rinse"), ("WHAT", "it")]})
+    assert [(a.span.text, a.inferred) for a in recipe.steps[0].frames[0].what] == [("it", False)]
