@@ -1,4 +1,4 @@
-"""The headless command line: `cook2ltl parse | ltl | models | doctor`."""
+"""The headless command line: `cook2ltl parse | translate | rollout | library | ltl | models | doctor`."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ import typer
 from rich.console import Console
 from rich.markup import escape
 
+from cook2ltl.cli.library_command import library_app
 from cook2ltl.cli.models_command import models_app
 from cook2ltl.cli.parse_command import parse_command
 from cook2ltl.cli.rollout_command import rollout_command
@@ -20,6 +21,7 @@ app = typer.Typer(help="Cooking recipes to LTL task specifications, offline.", n
 app.command("parse")(parse_command)
 app.command("translate")(translate_command)
 app.command("rollout")(rollout_command)
+app.add_typer(library_app, name="library")
 app.add_typer(models_app, name="models")
 app.add_typer(ltl_app, name="ltl")
 
