@@ -7,7 +7,7 @@ import pytest
 
 from cook2ltl import paths
 from cook2ltl.errors import UserError
-from cook2ltl.library import store
+from cook2ltl.library import schema
 from cook2ltl.library.store import SCHEMA_VERSION, Library, Status
 
 
@@ -116,8 +116,7 @@ def test_a_failing_migration_leaves_the_file_as_it_was(tmp_path, monkeypatch):
         db.conn.execute("CREATE TABLE half_done (x)")
         raise RuntimeError("disk on fire")
 
-    monkeypatch.setattr(store, "MIGRATIONS", (*store.MIGRATIONS, broken))
-    monkeypatch.setattr(store, "SCHEMA_VERSION", SCHEMA_VERSION + 1)
+    monkeypatch.setattr(schema, "MIGRATIONS", (*schema.MIGRATIONS, broken))
     with pytest.raises(RuntimeError):
         Library(path)
     conn = sqlite3.connect(path)

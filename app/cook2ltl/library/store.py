@@ -1,30 +1,40 @@
 """The action library 𝔸: parametric reductions in one SQLite file, shared by every run.
 
 One row per learnt action: the primitive set it is written in, the verb, its signature (the categories
-it fills), the body with `$what`-style placeholders, a review status and where it came from. At most one
-row per (primitive set, verb, signature) is live (not rejected). The schema version is SQLite's
-`user_version`; migrations are numbered functions run in one transaction. Each thread gets its own
-connection (sqlite3 refuses to share one), and WAL lets a reader and a writer work side by side.
+it fills), the body with `$what`-style placeholders, a review status, the kitchen check of the body and
+where it came from. At most one row per (primitive set, verb, signature) is live (not rejected); every
+body an entry ever had is kept in `versions`. A model's reduction is stored pending and never approved by
+the program: a person approves it, and that approval wins over any later reduction. The schema and its
+migrations are in `schema`. Each thread gets its own connection (sqlite3 refuses to share one), WAL lets a
+reader and a writer work side by side, and every write is one transaction.
 """
 
 from __future__ import annotations
 
+import getpass
+import json
+import os
 import sqlite3
 import threading
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
-from datetime import datetime, timezone
 from enum import StrEnum
 from pathlib import Path
 
 from sqlite_utils import Database
 
 from cook2ltl.errors import UserError
+from cook2ltl.library import versions
+from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
+from cook2ltl.library.versions import Version, checked, now
 
-TABLE = "actions"
+__all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Status", "Version", "reviewer"]
+REPLACER = "cook2ltl"  # who rejects a pending entry that a new reduction replaces
 
 
 class Status(StrEnum):
-    PENDING = "pending"  # learnt from a model, used, not yet reviewed
+    PENDING = "pending"  # learnt from a model (or edited), used, not yet reviewed
     APPROVED = "approved"
     REJECTED = "rejected"  # never used again; the action is reduced anew when met
 
@@ -40,27 +50,24 @@ class LibraryEntry:
     model: str
     prompt_hash: str
     created: str
+    validation: str = "unchecked"  # passed, failed or unchecked: the kitchen check of the current body
+    problems: tuple[str, ...] = ()  # that check's messages
+    reviewed_by: str | None = None  # who set the current status, and when (None: nobody since the last body)
+    reviewed_at: str | None = None
+    example: tuple[tuple[str, str], ...] = ()  # placeholder → value of the action it was learnt from
+    version: int = 1
+
+    @property
+    def action(self) -> str:
+        return f"{self.verb}({', '.join(self.signature)})"
 
 
-def _create_actions(db: Database) -> None:
-    db.conn.execute(f"""
-        CREATE TABLE {TABLE} (
-            id INTEGER PRIMARY KEY,
-            primitives TEXT NOT NULL,
-            verb TEXT NOT NULL,
-            signature TEXT NOT NULL,
-            body TEXT NOT NULL,
-            status TEXT NOT NULL DEFAULT 'pending' CHECK (status IN ('pending', 'approved', 'rejected')),
-            model TEXT NOT NULL,
-            prompt_hash TEXT NOT NULL,
-            created TEXT NOT NULL
-        )""")
-    db.conn.execute(f"CREATE UNIQUE INDEX one_live_entry ON {TABLE} (primitives, verb, signature) "
-                    "WHERE status != 'rejected'")
-
-
-MIGRATIONS = (_create_actions,)  # MIGRATIONS[n] takes a library from schema version n to n + 1
-SCHEMA_VERSION = len(MIGRATIONS)
+def reviewer() -> str:
+    """Who is at the keyboard: $COOK2LTL_USER, else the login name."""
+    try:
+        return os.environ.get("COOK2LTL_USER") or getpass.getuser()
+    except (KeyError, OSError):  # no login name (a container without a passwd entry)
+        return "unknown"
 
 
 class Library:
@@ -71,35 +78,75 @@ class Library:
         self._lock = threading.Lock()
         self._db()  # open and migrate now, so a bad file is reported before any work
 
-    def lookup(self, primitives: str, verb: str, signature: tuple[str, ...]) -> LibraryEntry | None:
+    # --- reading -------------------------------------------------------------------------------------------
+
+    def lookup(self, primitives: str, verb: str, signature: tuple[str, ...],
+               approved_only: bool = False) -> LibraryEntry | None:
+        """The live entry for an action; with `approved_only` (lab mode) only a reviewed and approved one."""
         rows = self._db()[TABLE].rows_where(
-            "primitives = ? AND verb = ? AND signature = ? AND status != 'rejected'",
+            f"primitives = ? AND verb = ? AND signature = ? AND {_usable(approved_only)}",
             [primitives, verb, ",".join(signature)], limit=1)
         return next((_entry(row) for row in rows), None)
 
-    def live(self, primitives: str) -> tuple[LibraryEntry, ...]:
+    def live(self, primitives: str, approved_only: bool = False) -> tuple[LibraryEntry, ...]:
         """The entries a translation may use, oldest first: their verbs join later prompts."""
-        rows = self._db()[TABLE].rows_where("primitives = ? AND status != 'rejected'", [primitives], order_by="id")
+        rows = self._db()[TABLE].rows_where(f"primitives = ? AND {_usable(approved_only)}", [primitives],
+                                            order_by="id")
         return tuple(_entry(row) for row in rows)
 
     def entries(self) -> tuple[LibraryEntry, ...]:
         return tuple(_entry(row) for row in self._db()[TABLE].rows_where(order_by="id"))
 
+    def get(self, entry_id: int) -> LibraryEntry:
+        return _entry(self._row(entry_id))
+
+    def history(self, entry_id: int) -> tuple[Version, ...]:
+        """Every body the entry had, oldest first; the last is the current one."""
+        self._row(entry_id)
+        return versions.history(self._db(), entry_id)
+
+    def search(self, text: str) -> tuple[LibraryEntry, ...]:
+        """Entries whose verb or body match an FTS5 query (words, "a phrase", pick*, boil OR fry), best first."""
+        if not text.strip():
+            return self.entries()
+        try:
+            return tuple(_entry(row) for row in self._db()[TABLE].search(text))
+        except sqlite3.OperationalError as error:
+            raise UserError(f"Cannot search the library for {text!r}: {error}.",
+                            'search for words (boil pot), a prefix (pick*), or put text with punctuation '
+                            'in double quotes ("put($what").') from error
+
+    # --- writing: each method is one transaction -------------------------------------------------------------
+
+    @contextmanager
+    def transaction(self) -> Iterator[Library]:
+        """Several writes as one: all of them, or (on an exception) none. Writes inside nest as savepoints."""
+        with self._db().atomic():
+            yield self
+
     def add(self, primitives: str, verb: str, signature: tuple[str, ...], body: str, model: str, prompt_hash: str,
-            replacing: int | None = None) -> LibraryEntry:
-        """Store a new pending entry; `replacing` is a live entry that no longer fits, rejected in the
-        same transaction. If another process stored the same action first, that entry is returned."""
+            replacing: int | None = None, validation: str = "unchecked", problems: Sequence[str] = (),
+            example: Mapping[str, str] | None = None) -> LibraryEntry:
+        """Store a model's reduction as a new pending entry (version 1). `replacing` is a live entry that no longer
+        fits: a pending one is rejected in the same transaction, an approved one wins and is returned unchanged.
+        If another process stored the same action first, that entry is returned."""
         db = self._db()
+        created = now()
         row = {
             "primitives": primitives, "verb": verb, "signature": ",".join(signature), "body": body,
-            "status": Status.PENDING.value, "model": model, "prompt_hash": prompt_hash,
-            "created": datetime.now(timezone.utc).isoformat(timespec="seconds"),
+            "status": Status.PENDING.value, "model": model, "prompt_hash": prompt_hash, "created": created,
+            "validation": checked(validation), "problems": json.dumps(list(problems)),
+            "example": json.dumps(dict(example or {})), "version": 1, "reviewed_by": None, "reviewed_at": None,
         }
         try:
             with db.atomic():
-                if replacing is not None:
-                    db[TABLE].update(replacing, {"status": Status.REJECTED.value})
+                old = self._row(replacing, missing_ok=True) if replacing is not None else None
+                if old is not None and old["status"] == Status.APPROVED:
+                    return _entry(old)
+                if old is not None and old["status"] == Status.PENDING:
+                    self._set_status(replacing, Status.REJECTED, REPLACER)
                 new_id = db[TABLE].insert(row).last_pk
+                versions.record(db, Version(new_id, 1, body, validation, tuple(problems), model, created, "learnt"))
         except sqlite3.IntegrityError:
             existing = self.lookup(primitives, verb, signature)
             if existing is None:
@@ -107,11 +154,61 @@ class Library:
             return existing
         return _entry({**row, "id": new_id})
 
-    def set_status(self, entry_id: int, status: Status) -> None:
+    def set_status(self, entry_id: int, status: Status | str, by: str | None = None,
+                   force: bool = False) -> LibraryEntry:
+        """Approve, reject (or return to pending) an entry, recording who and when. An entry whose body failed
+        the kitchen check is approved only with `force`."""
+        status = Status(status)
+        with self._db().atomic():
+            row = self._row(entry_id)
+            if status == Status.APPROVED and row["validation"] == "failed" and not force:
+                raise UserError(f"Entry {entry_id} ({_entry(row).action}) failed the kitchen check: "
+                                f"{'; '.join(json.loads(row['problems'])) or 'no details'}.",
+                                "fix its body with `cook2ltl library edit`, or approve it anyway with --force.")
+            self._set_status(entry_id, status, by or reviewer())
+        return self.get(entry_id)
+
+    def edit(self, entry_id: int, body: str, by: str, validation: str = "unchecked", problems: Sequence[str] = (),
+             note: str = "") -> LibraryEntry:
+        """A new body as a new version (the caller checks and validates it first); the entry returns to pending,
+        unreviewed, for someone to approve."""
+        with self._db().atomic():
+            self._new_version(self._row(entry_id), body, by, validation, tuple(problems), note)
+        return self.get(entry_id)
+
+    def undo(self, entry_id: int, by: str) -> LibraryEntry:
+        """Bring back the body before the current one, as a new version (pending again); history is never lost."""
+        with self._db().atomic():
+            row = self._row(entry_id)
+            target = versions.undo_target(versions.history(self._db(), entry_id))
+            if target is None:
+                raise UserError(f"Entry {entry_id} has no earlier version to go back to.",
+                                f"`cook2ltl library history {entry_id}` shows its versions.")
+            self._new_version(row, target.body, by, target.validation, target.problems,
+                              f"undo: back to version {target.version}", restores=target.version)
+        return self.get(entry_id)
+
+    def insert(self, entry: LibraryEntry, history: Sequence[Version]) -> LibraryEntry:
+        """Store an entry as it is, status, review and every version included (an import); its id is new."""
         db = self._db()
         with db.atomic():
-            if db.execute(f"UPDATE {TABLE} SET status = ? WHERE id = ?", [Status(status).value, entry_id]).rowcount != 1:
-                raise UserError(f"No entry {entry_id} in the action library {self.path}.")
+            row = {
+                "primitives": entry.primitives, "verb": entry.verb, "signature": ",".join(entry.signature),
+                "body": entry.body, "status": Status(entry.status).value, "model": entry.model,
+                "prompt_hash": entry.prompt_hash, "created": entry.created,
+                "validation": checked(entry.validation), "problems": json.dumps(list(entry.problems)),
+                "reviewed_by": entry.reviewed_by, "reviewed_at": entry.reviewed_at,
+                "example": json.dumps(dict(entry.example)), "version": history[-1].version,
+            }
+            try:
+                new_id = db[TABLE].insert(row).last_pk
+            except sqlite3.IntegrityError as error:
+                raise self._taken(entry) from error
+            for version in history:
+                versions.record(db, Version(new_id, version.version, version.body, version.validation,
+                                            version.problems, version.author, version.at, version.note,
+                                            version.restores))
+        return self.get(new_id)
 
     def close(self) -> None:
         with self._lock:
@@ -119,6 +216,43 @@ class Library:
                 db.close()
             self._opened.clear()
         self._local = threading.local()
+
+    # --- inside a transaction ------------------------------------------------------------------------------
+
+    def _row(self, entry_id: int, missing_ok: bool = False) -> dict | None:
+        row = next(self._db()[TABLE].rows_where("id = ?", [entry_id]), None)
+        if row is None and not missing_ok:
+            raise UserError(f"No entry {entry_id} in the action library {self.path}.",
+                            "`cook2ltl library list` shows them.")
+        return row
+
+    def _set_status(self, entry_id: int, status: Status, by: str) -> None:
+        try:
+            self._db().conn.execute(f"UPDATE {TABLE} SET status = ?, reviewed_by = ?, reviewed_at = ? WHERE id = ?",
+                                    [status.value, by, now(), entry_id])
+        except sqlite3.IntegrityError as error:
+            raise self._taken(self.get(entry_id)) from error
+
+    def _new_version(self, row: dict, body: str, by: str, validation: str, problems: tuple[str, ...], note: str,
+                     restores: int | None = None) -> None:
+        db = self._db()
+        number = row["version"] + 1
+        versions.record(db, Version(row["id"], number, body, validation, problems, by, now(), note, restores))
+        try:
+            db.conn.execute(f"UPDATE {TABLE} SET body = ?, validation = ?, problems = ?, version = ?, status = ?, "
+                            "reviewed_by = NULL, reviewed_at = NULL WHERE id = ?",
+                            [body, validation, json.dumps(list(problems)), number, Status.PENDING.value, row["id"]])
+        except sqlite3.IntegrityError as error:
+            raise self._taken(_entry(row)) from error
+
+    def _taken(self, entry: LibraryEntry) -> UserError:
+        live = self.lookup(entry.primitives, entry.verb, entry.signature)
+        if live is None:  # gone again by the time we looked: another process's write
+            return UserError(f"The library changed while writing {entry.action}.", "try again.")
+        return UserError(f"Entry {live.id} is already the live {entry.action} for {entry.primitives}: "
+                         "there can be only one.", f"reject entry {live.id} first.")
+
+    # --- connections ---------------------------------------------------------------------------------------
 
     def _db(self) -> Database:
         db = getattr(self._local, "db", None)
@@ -142,7 +276,7 @@ class Library:
         try:
             db = Database(conn)
             conn.execute("PRAGMA busy_timeout = 10000")  # wait for another process's write
-            _migrate(db, self.path)
+            migrate(db, self.path)
             db.enable_wal()  # after the check, so another program's SQLite file is left as it was
         except sqlite3.DatabaseError as error:
             conn.close()
@@ -154,25 +288,8 @@ class Library:
         return db
 
 
-def _migrate(db: Database, path: Path) -> None:
-    """Bring the file to SCHEMA_VERSION; BEGIN IMMEDIATE makes a second process wait, then find it done."""
-    conn = db.conn
-    conn.execute("BEGIN IMMEDIATE")
-    try:
-        version = conn.execute("PRAGMA user_version").fetchone()[0]
-        if version > SCHEMA_VERSION:
-            raise UserError(f"The action library {path} has schema version {version}; this cook2ltl knows {SCHEMA_VERSION}.",
-                            "upgrade cook2ltl, or use another --library.")
-        if version == 0 and conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]:
-            raise UserError(f"{path} is an SQLite file but not an action library.",
-                            "give --library (or COOK2LTL_LIBRARY) a new path.")
-        for number in range(version, SCHEMA_VERSION):
-            MIGRATIONS[number](db)
-        conn.execute(f"PRAGMA user_version = {SCHEMA_VERSION}")
-        conn.execute("COMMIT")
-    except BaseException:
-        conn.execute("ROLLBACK")
-        raise
+def _usable(approved_only: bool) -> str:
+    return "status = 'approved'" if approved_only else "status != 'rejected'"
 
 
 def _entry(row: dict) -> LibraryEntry:
@@ -180,4 +297,6 @@ def _entry(row: dict) -> LibraryEntry:
         id=row["id"], primitives=row["primitives"], verb=row["verb"],
         signature=tuple(part for part in row["signature"].split(",") if part), body=row["body"],
         status=Status(row["status"]), model=row["model"], prompt_hash=row["prompt_hash"], created=row["created"],
+        validation=row["validation"], problems=tuple(json.loads(row["problems"])), reviewed_by=row["reviewed_by"],
+        reviewed_at=row["reviewed_at"], example=tuple(json.loads(row["example"]).items()), version=row["version"],
     )

@@ -1,0 +1,91 @@
+"""The action library's schema: numbered migrations, run in one transaction when a file is opened.
+
+MIGRATIONS[n] takes a library from schema version n to n + 1 (SQLite's `user_version`). A migration is
+never edited once released: a library written by an older cook2ltl is brought forward in place.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from sqlite_utils import Database
+
+from cook2ltl.errors import UserError
+
+TABLE = "actions"
+VERSIONS = "versions"
+VALIDATIONS = ("passed", "failed", "unchecked")  # the kitchen check of a body; unchecked: never run
+
+
+def _create_actions(db: Database) -> None:
+    db.conn.execute(f"""
+        CREATE TABLE {TABLE} (
+            id INTEGER PRIMARY KEY,
+            primitives TEXT NOT NULL,
+            verb TEXT NOT NULL,
+            signature TEXT NOT NULL,
+            body TEXT NOT NULL,
+            status TEXT NOT NULL DEFAULT 'pending' CHECK (status IN ('pending', 'approved', 'rejected')),
+            model TEXT NOT NULL,
+            prompt_hash TEXT NOT NULL,
+            created TEXT NOT NULL
+        )""")
+    db.conn.execute(f"CREATE UNIQUE INDEX one_live_entry ON {TABLE} (primitives, verb, signature) "
+                    "WHERE status != 'rejected'")
+
+
+def _review_versions_and_search(db: Database) -> None:
+    """Who reviewed an entry and when, the kitchen check of its body, every body it ever had, and search."""
+    checked = ", ".join(f"'{value}'" for value in VALIDATIONS)
+    for column in (
+        f"validation TEXT NOT NULL DEFAULT 'unchecked' CHECK (validation IN ({checked}))",
+        "problems TEXT NOT NULL DEFAULT '[]'",  # JSON list of the kitchen check's messages
+        "reviewed_by TEXT",  # who set the current status (approved or rejected), and when
+        "reviewed_at TEXT",
+        "example TEXT NOT NULL DEFAULT '{}'",  # JSON placeholder → value of the action the body was learnt from
+        "version INTEGER NOT NULL DEFAULT 1",  # the current body's number in `versions`
+    ):
+        db.conn.execute(f"ALTER TABLE {TABLE} ADD COLUMN {column}")
+    db.conn.execute(f"""
+        CREATE TABLE {VERSIONS} (
+            entry_id INTEGER NOT NULL REFERENCES {TABLE} (id),
+            version INTEGER NOT NULL,
+            body TEXT NOT NULL,
+            validation TEXT NOT NULL CHECK (validation IN ({checked})),
+            problems TEXT NOT NULL,
+            author TEXT NOT NULL,
+            at TEXT NOT NULL,
+            note TEXT NOT NULL DEFAULT '',
+            restores INTEGER,  -- set by undo: the version whose body this one brings back
+            PRIMARY KEY (entry_id, version)
+        )""")
+    db.conn.execute(f"INSERT INTO {VERSIONS} (entry_id, version, body, validation, problems, author, at, note) "
+                    f"SELECT id, 1, body, 'unchecked', '[]', model, created, 'learnt' FROM {TABLE}")
+    # External-content FTS5 over verb and body; sqlite-utils' triggers keep it in step with every write.
+    db[TABLE].enable_fts(["verb", "body"], create_triggers=True, tokenize="porter")
+
+
+MIGRATIONS = (_create_actions, _review_versions_and_search)
+SCHEMA_VERSION = len(MIGRATIONS)
+
+
+def migrate(db: Database, path: Path) -> None:
+    """Bring the file to the newest schema; BEGIN IMMEDIATE makes a second process wait, then find it done."""
+    newest = len(MIGRATIONS)
+    conn = db.conn
+    conn.execute("BEGIN IMMEDIATE")
+    try:
+        version = conn.execute("PRAGMA user_version").fetchone()[0]
+        if version > newest:
+            raise UserError(f"The action library {path} has schema version {version}; this cook2ltl knows {newest}.",
+                            "upgrade cook2ltl, or use another --library.")
+        if version == 0 and conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]:
+            raise UserError(f"{path} is an SQLite file but not an action library.",
+                            "give --library (or COOK2LTL_LIBRARY) a new path.")
+        for number in range(version, newest):
+            MIGRATIONS[number](db)
+        conn.execute(f"PRAGMA user_version = {newest}")
+        conn.execute("COMMIT")
+    except BaseException:
+        conn.execute("ROLLBACK")
+        raise

@@ -1,0 +1,59 @@
+"""Every body a library entry ever had: the `versions` table, read for history and written by edit and undo."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from datetime import datetime, timezone
+
+from sqlite_utils import Database
+
+from cook2ltl.library.schema import VALIDATIONS, VERSIONS
+
+
+@dataclass(frozen=True)
+class Version:
+    entry_id: int
+    version: int
+    body: str
+    validation: str  # passed, failed or unchecked: the kitchen check of this body
+    problems: tuple[str, ...]
+    author: str  # the model that learnt it, or the person who edited, undid or imported it
+    at: str
+    note: str
+    restores: int | None = None  # undo: the version whose body this one brings back
+
+
+def now() -> str:
+    return datetime.now(timezone.utc).isoformat(timespec="seconds")
+
+
+def checked(validation: str) -> str:
+    if validation not in VALIDATIONS:
+        raise ValueError(f"validation must be one of {', '.join(VALIDATIONS)}, not {validation!r}")
+    return validation
+
+
+def record(db: Database, version: Version) -> None:
+    """Store one version; the caller holds the transaction that also updates the entry."""
+    db.conn.execute(
+        f"INSERT INTO {VERSIONS} (entry_id, version, body, validation, problems, author, at, note, restores) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        [version.entry_id, version.version, version.body, checked(version.validation), json.dumps(version.problems),
+         version.author, version.at, version.note, version.restores])
+
+
+def history(db: Database, entry_id: int) -> tuple[Version, ...]:
+    rows = db[VERSIONS].rows_where("entry_id = ?", [entry_id], order_by="version")
+    return tuple(Version(entry_id=row["entry_id"], version=row["version"], body=row["body"],
+                         validation=row["validation"], problems=tuple(json.loads(row["problems"])),
+                         author=row["author"], at=row["at"], note=row["note"], restores=row["restores"])
+                 for row in rows)
+
+
+def undo_target(versions: tuple[Version, ...]) -> Version | None:
+    """The version an undo brings back: the one before the current body's own. A restored version counts as
+    the one it restores, so undoing again keeps stepping back instead of flipping between two bodies."""
+    current = versions[-1]
+    wanted = (current.restores or current.version) - 1
+    return next((v for v in versions if v.version == wanted), None)
