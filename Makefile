@@ -14,7 +14,7 @@ export OMP_WAIT_POLICY := passive
 .PHONY: run test models install doctor clean-venv
 
 run: models
-	$(BIN)/cook2ltl parse $(DEMO)
+	$(BIN)/cook2ltl app $(DEMO)
 
 test: models
 	@echo "==> [4/4] tests"

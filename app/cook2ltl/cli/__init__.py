@@ -1,8 +1,11 @@
-"""The headless command line: `cook2ltl parse | translate | rollout | library | ltl | models | doctor`."""
+"""The command line: `cook2ltl` alone (or `cook2ltl app`) opens the app; `parse | translate | rollout | library |
+ltl | models | doctor` are headless."""
 
 from __future__ import annotations
 
 import sys
+from pathlib import Path
+from typing import Optional
 
 import typer
 from rich.console import Console
@@ -16,7 +19,7 @@ from cook2ltl.cli.translate_command import translate_command
 from cook2ltl.errors import UserError
 from cook2ltl.ltl.cli import ltl_app
 
-app = typer.Typer(help="Cooking recipes to LTL task specifications, offline.", no_args_is_help=True,
+app = typer.Typer(help="Cooking recipes to LTL task specifications, offline. Without a command: the app.",
                   pretty_exceptions_enable=False)
 app.command("parse")(parse_command)
 app.command("translate")(translate_command)
@@ -24,6 +27,21 @@ app.command("rollout")(rollout_command)
 app.add_typer(library_app, name="library")
 app.add_typer(models_app, name="models")
 app.add_typer(ltl_app, name="ltl")
+
+
+@app.callback(invoke_without_command=True)
+def open_app_by_default(context: typer.Context) -> None:
+    if context.invoked_subcommand is None:
+        app_command(None)
+
+
+@app.command("app")
+def app_command(recipe: Optional[Path] = typer.Argument(None, show_default=False,
+                                                        help="A recipe file to open in the editor.")) -> None:
+    """Open the app: translate a recipe, review the action library, roll formulas out in the kitchen."""
+    from cook2ltl.ui.app import run_app
+
+    run_app(recipe)
 
 
 @app.command("doctor")

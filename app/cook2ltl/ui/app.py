@@ -1,0 +1,101 @@
+"""The Textual app: Translate, Library and Rollout screens as modes, the help screen and the error dialog.
+
+Nothing heavy is imported or loaded at start-up (the first screen paints before any model is touched);
+`Services` builds the backends in a worker the first time a run needs them.
+"""
+
+from __future__ import annotations
+
+import traceback
+from datetime import datetime
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from textual.app import App
+from textual.binding import Binding
+
+from cook2ltl.errors import UserError
+from cook2ltl.ui.commands import MainCommands
+from cook2ltl.ui.messages import TranslationDone
+from cook2ltl.ui.screens.base import WorkScreen
+from cook2ltl.ui.screens.dialogs import ErrorDialog
+from cook2ltl.ui.screens.help import HelpScreen
+from cook2ltl.ui.screens.library import LibraryScreen
+from cook2ltl.ui.screens.rollout import RolloutScreen
+from cook2ltl.ui.screens.translate import TranslateScreen
+from cook2ltl.ui.services import Services, production_services
+
+if TYPE_CHECKING:
+    from cook2ltl.pipeline import Translation
+
+
+class Cook2LTLApp(App):
+    CSS_PATH = "app.tcss"
+    TITLE = "cook2ltl"
+    SUB_TITLE = "recipes to LTL task specifications"
+    MODES = {"translate": TranslateScreen, "library": LibraryScreen, "rollout": RolloutScreen}
+    DEFAULT_MODE = "translate"
+    COMMANDS = App.COMMANDS | {MainCommands}
+    BINDINGS = [
+        Binding("f1", "help", "Help", id="app.help"),
+        Binding("f2", "switch_mode('translate')", "Translate", id="app.translate"),
+        Binding("f3", "switch_mode('library')", "Library", id="app.library"),
+        Binding("f4", "switch_mode('rollout')", "Rollout", id="app.rollout"),
+    ]
+
+    def __init__(self, services: Services, recipe_text: str = "", recipe_path: Path | None = None) -> None:
+        super().__init__()
+        self.services = services
+        self.recipe_text = recipe_text
+        self.recipe_path = recipe_path
+        self.model_name = services.model_names[0]  # chosen on Translate, used by Rollout's planning too
+        self.translation: Translation | None = None  # the last one finished, for the Rollout screen
+
+    def on_translation_done(self, message: TranslationDone) -> None:
+        self.translation = message.translation
+
+    def action_help(self) -> None:
+        if isinstance(self.screen, HelpScreen):
+            return
+        sections = [("Everywhere", [*self.BINDINGS, Binding("ctrl+p", "", "Command palette"),
+                                    Binding("ctrl+q", "", "Quit")])]
+        for title, screen in (("Translate", TranslateScreen), ("Library", LibraryScreen), ("Rollout", RolloutScreen)):
+            sections.append((title, [*screen.BINDINGS, *WorkScreen.BINDINGS]))
+        self.push_screen(HelpScreen(sections))
+
+    def show_error(self, error: BaseException) -> None:
+        """A dialog for any failure: a UserError's message and hint, else the error in a line and the
+        traceback written to a log file (a traceback on screen would be a bug)."""
+        if isinstance(error, UserError):
+            self.push_screen(ErrorDialog("Cannot do that", error.message, error.hint))
+            return
+        log = _log_traceback(error)
+        hint = f"This is a bug in cook2ltl; the details are in {log}." if log else "This is a bug in cook2ltl."
+        self.push_screen(ErrorDialog("Unexpected error", f"{type(error).__name__}: {error}", hint))
+
+    def on_unmount(self) -> None:
+        self.services.close()
+
+
+def _log_traceback(error: BaseException) -> Path | None:
+    from cook2ltl import paths
+
+    path = paths.data_dir() / "ui-errors.log"
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with path.open("a", encoding="utf-8") as handle:
+            handle.write(f"--- {datetime.now().isoformat(timespec='seconds')}\n")
+            handle.write("".join(traceback.format_exception(error)))
+    except OSError:
+        return None
+    return path
+
+
+def run_app(recipe_path: str | Path | None = None) -> None:
+    """Open the app, on a recipe file if one is given (read now, so a bad file is a CLI error)."""
+    text = ""
+    if recipe_path is not None:
+        from cook2ltl.cli.inputs import read_recipe
+
+        text = read_recipe(str(recipe_path))
+    Cook2LTLApp(production_services(), text, Path(recipe_path) if recipe_path else None).run()

@@ -1,0 +1,144 @@
+"""The core's generators (`pipeline.run`, `kitchen.trial.run_trial`) as streams of typed messages.
+
+A worker only forwards what these yield, so the translating and rolling out are testable without a screen;
+cancellation reaches the core as the same `threading.Event` the core takes.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from textual.message import Message
+
+from cook2ltl.ui.messages import (
+    ActionReduced, ObjectState, RecipeParsed, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped,
+    StepTranslated, TranslationDone, WorkProgress, WorkStopped,
+)
+from cook2ltl.ui.services import Services
+
+if TYPE_CHECKING:
+    from cook2ltl.kitchen.tasks import Task
+    from cook2ltl.ltl.ast import Formula
+
+
+@dataclass(frozen=True)
+class TranslateRequest:
+    text: str
+    primitives: str  # recipe, ai2thor, or a TOML file
+    variant: str  # a pipeline.Variant value
+    model: str
+
+
+@dataclass(frozen=True)
+class RolloutRequest:
+    scene: str
+    task: Task | None = None
+    formula: Formula | None = None  # None: plan the task's instruction with Algorithm 1 first
+    model: str = ""
+
+
+def translation_feed(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
+    from cook2ltl.pipeline import ActionDone, Finished, Parsed, Started, StepDone, Translator, Variant, run
+    from cook2ltl.reduce.primitives import load_primitives
+
+    variant = Variant(request.variant)
+    primitives = load_primitives(request.primitives)
+    yield WorkProgress("loading the parsing models …")
+    spans, dependencies = services.spans(), services.dependencies()
+    library = services.library() if variant == Variant.AR_LIBRARY else None
+    translator = Translator(primitives, services.model(request.model), library, variant)
+    yield WorkProgress("parsing (the span model loads on first use) …")
+    total = 0
+    for event in run(request.text, spans, dependencies, translator, cancel):
+        if isinstance(event, Parsed):
+            yield RecipeParsed(event.recipe)
+        elif isinstance(event, Started):
+            total = event.actions
+            yield WorkProgress(f"reducing {total} actions with {request.model} …", 0, total)
+        elif isinstance(event, ActionDone):
+            yield ActionReduced(event, total)
+            reduction = event.result.reduction
+            yield WorkProgress(f"{reduction.action.text()} ({reduction.source.value})", event.done, total)
+        elif isinstance(event, StepDone):
+            yield StepTranslated(event.result)
+        elif isinstance(event, Finished):
+            yield TranslationDone(event.translation)
+            return
+    yield WorkStopped()
+
+
+def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.Event) -> Iterator[Message]:
+    from cook2ltl.kitchen.rollout import ActionRefused, Started, Stepped
+    from cook2ltl.kitchen.trial import TrialDone, run_trial
+
+    task, plan, formula = request.task, None, request.formula
+    if formula is None:
+        yield WorkProgress(f"planning “{task.instruction}” with {request.model} …")
+        plan = _planner(services, request.model).plan(task.instruction)
+        formula = plan.formula
+        if cancel.is_set():
+            yield WorkStopped()
+            return
+    yield WorkProgress(f"starting the kitchen ({request.scene}) …")
+    with services.kitchen_lock:
+        kitchen = services.kitchen(request.scene)
+        touched: dict[str, None] = {}
+        for event in run_trial(kitchen, formula, request.scene, task, plan, cancel=cancel):
+            if isinstance(event, Started):
+                yield RolloutBegan(event.formula, event.scene, task, plan, event.unobservable)
+                yield WorkProgress("rolling out …")
+            elif isinstance(event, Stepped):
+                touched.update(dict.fromkeys(_object_ids(event.step.attempt.calls)))
+                yield RolloutStepped(event.step, object_states(kitchen.last_event.metadata["objects"], touched))
+            elif isinstance(event, ActionRefused):
+                yield RolloutRefused(event.attempt)
+            elif isinstance(event, TrialDone):
+                yield RolloutDone(event.trial)
+
+
+def _planner(services: Services, model: str):
+    from cook2ltl.kitchen.planning import PRIMITIVES, Planner
+    from cook2ltl.pipeline import Translator
+    from cook2ltl.reduce.primitives import load_primitives
+
+    translator = Translator(load_primitives(PRIMITIVES), services.model(model), services.library())
+    return Planner(translator, services.spans(), services.dependencies())
+
+
+def _object_ids(calls) -> list[str]:
+    return [call.action["objectId"] for call in calls if "objectId" in call.action]
+
+
+def object_states(objects: Sequence[Mapping[str, Any]], ids: Sequence[str]) -> tuple[ObjectState, ...]:
+    """The objects a rollout touched, in the order it first touched them, as the kitchen sees them now."""
+    by_id = {o["objectId"]: o for o in objects}
+    states = []
+    for object_id in ids:
+        found = by_id.get(object_id)
+        name = object_id.split("|")[0]
+        if found is None:
+            states.append(ObjectState(name, "", "gone (sliced or broken into pieces)"))
+            continue
+        parents = found.get("parentReceptacles") or []
+        where = "in hand" if found.get("isPickedUp") else (parents[0].split("|")[0] if parents else "")
+        states.append(ObjectState(name, where, ", ".join(_flags(found)) or "—"))
+    return tuple(states)
+
+
+def _flags(o: Mapping[str, Any]) -> list[str]:
+    flags = []
+    if o.get("openable"):
+        flags.append("open" if o.get("isOpen") else "closed")
+    if o.get("toggleable"):
+        flags.append("on" if o.get("isToggled") else "off")
+    if o.get("temperature") in ("Hot", "Cold"):
+        flags.append(o["temperature"].lower())
+    named = {"isSliced": "sliced", "isCooked": "cooked", "isBroken": "broken", "isUsedUp": "used up",
+             "isDirty": "dirty"}
+    flags += [word for key, word in named.items() if o.get(key)]
+    if o.get("isFilledWithLiquid"):
+        flags.append(f"filled with {o.get('fillLiquid') or 'liquid'}")
+    return flags

@@ -1,0 +1,113 @@
+"""Typed messages that thread workers post to their screen: progress, results, and the end of a run.
+
+Workers never touch widgets; they post these (`post_message` is thread-safe) and the screen draws them. They
+stay on the screen (no bubbling) except `TranslationDone`, which the app keeps for the Rollout screen.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from textual.message import Message
+
+if TYPE_CHECKING:
+    from cook2ltl.domain import ParsedRecipe
+    from cook2ltl.kitchen.executor import Attempt
+    from cook2ltl.kitchen.planning import Plan
+    from cook2ltl.kitchen.rollout import TraceStep
+    from cook2ltl.kitchen.tasks import Task
+    from cook2ltl.kitchen.trial import Trial
+    from cook2ltl.library import LibraryEntry
+    from cook2ltl.ltl.ast import Atom, Formula
+    from cook2ltl.pipeline import ActionDone, StepResult, Translation
+
+
+class ScreenMessage(Message):
+    """For the screen whose worker posted it."""
+
+    bubble = False
+
+
+class WorkProgress(ScreenMessage):
+    """The latest word on a running job; each replaces the one before (done/total None: no bar)."""
+
+    def __init__(self, text: str, done: int | None = None, total: int | None = None) -> None:
+        super().__init__()
+        self.text, self.done, self.total = text, done, total
+
+
+class WorkStopped(ScreenMessage):
+    """The job ended early because it was cancelled."""
+
+
+# --- translation -----------------------------------------------------------------------------------------
+
+class RecipeParsed(ScreenMessage):
+    def __init__(self, parsed: ParsedRecipe) -> None:
+        super().__init__()
+        self.parsed = parsed
+
+
+class ActionReduced(ScreenMessage):
+    def __init__(self, event: ActionDone, total: int) -> None:
+        super().__init__()
+        self.event, self.total = event, total
+
+
+class StepTranslated(ScreenMessage):
+    def __init__(self, result: StepResult) -> None:
+        super().__init__()
+        self.result = result
+
+
+class TranslationDone(Message):
+    """Bubbles to the app, which keeps the translation for the Rollout screen."""
+
+    def __init__(self, translation: Translation) -> None:
+        super().__init__()
+        self.translation = translation
+
+
+# --- library ---------------------------------------------------------------------------------------------
+
+class LibraryLoaded(ScreenMessage):
+    def __init__(self, entries: tuple[LibraryEntry, ...], select: int | None = None) -> None:
+        super().__init__()
+        self.entries, self.select = entries, select
+
+
+# --- rollout ---------------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class ObjectState:
+    """One object the rollout touched, as the kitchen reports it now."""
+
+    name: str
+    where: str
+    state: str
+
+
+class RolloutBegan(ScreenMessage):
+    def __init__(self, formula: Formula, scene: str, task: Task | None, plan: Plan | None,
+                 unobservable: tuple[Atom, ...]) -> None:
+        super().__init__()
+        self.formula, self.scene, self.task, self.plan, self.unobservable = formula, scene, task, plan, unobservable
+
+
+class RolloutStepped(ScreenMessage):
+    def __init__(self, step: TraceStep, objects: tuple[ObjectState, ...]) -> None:
+        super().__init__()
+        self.step, self.objects = step, objects
+
+
+class RolloutRefused(ScreenMessage):
+    def __init__(self, attempt: Attempt) -> None:
+        super().__init__()
+        self.attempt = attempt
+
+
+class RolloutDone(ScreenMessage):
+    def __init__(self, trial: Trial) -> None:
+        super().__init__()
+        self.trial = trial

@@ -1,0 +1,173 @@
+"""The Rollout screen: a kitchen task (planned by Algorithm 1, or its reference plan), the current recipe's
+formulas, or a formula typed in, executed headless in a kitchen; the action log, the objects it touched,
+and the formula's progress after every action, then the verdict."""
+
+from __future__ import annotations
+
+import threading
+
+from textual import work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.content import Content
+from textual.widgets import Button, Checkbox, DataTable, Footer, Header, Input, Select
+
+from cook2ltl.errors import UserError
+from cook2ltl.ui.feeds import RolloutRequest, rollout_feed
+from cook2ltl.ui.messages import RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped
+from cook2ltl.ui.screens.base import WorkScreen
+from cook2ltl.ui.widgets.progress_view import FormulaProgress, verdict_content
+from cook2ltl.ui.widgets.status import WorkStatus
+
+DEFAULT_SCENE = "FloorPlan1"
+FORMULA = "formula"  # the target typed in the formula field
+
+
+class RolloutScreen(WorkScreen):
+    BINDINGS = [Binding("ctrl+r", "run", "Run", id="rollout.run")]
+    PALETTE = (("Rollout: run", "Execute the chosen task or formula in the kitchen", "run"),)
+
+    def compose(self) -> ComposeResult:
+        from cook2ltl.kitchen.scenes import scene_names
+
+        yield Header()
+        with Horizontal(id="rollout-options", classes="options"):
+            yield Select(self._targets(), value=self._targets()[0][1], allow_blank=False, id="target")
+            yield Checkbox("reference plan (no model)", id="reference")
+            yield Select([("the task's kitchen", ""), *((name, name) for name in scene_names())], value="",
+                         allow_blank=False, id="scene")
+            yield Button("Run", variant="primary", id="run-rollout")
+        yield Input(placeholder="or an LTL formula over the ai2thor primitives, e.g. "
+                                "F(pick_up(apple) & F put(apple, fridge))", id="formula")
+        with Horizontal(id="rollout-body"):
+            with Vertical(id="rollout-main"):
+                with VerticalScroll(id="progress-scroll"):
+                    yield FormulaProgress("Choose a task or a formula and run it (ctrl+r).", id="progress")
+                yield DataTable(id="log", cursor_type="row")
+            yield DataTable(id="objects", cursor_type="none")
+        yield WorkStatus()
+        yield Footer()
+
+    def on_mount(self) -> None:
+        self.query_one("#log", DataTable).add_columns("#", "action", "now holds", "verdict")
+        self.query_one("#objects", DataTable).add_columns("object", "where", "state")
+
+    def on_screen_resume(self) -> None:
+        """The current recipe's formulas appear once a translation has finished."""
+        target = self.query_one("#target", Select)
+        choice = target.value
+        targets = self._targets()
+        target.set_options(targets)
+        target.value = choice if any(value == choice for _, value in targets) else targets[0][1]
+
+    def _targets(self) -> list[tuple[str, str]]:
+        from cook2ltl.kitchen.tasks import load_tasks
+
+        targets = [(f"task {t.id}: {t.instruction}", f"task:{t.id}") for t in load_tasks()]
+        translation = self.app.translation
+        if translation is not None:
+            targets.append((f"recipe: all {len(translation.steps)} steps ({translation.primitives})", "recipe"))
+            targets += [(f"recipe step {s.step.index + 1}: {s.step.sentence.text[:40]}", f"recipe:{i}")
+                        for i, s in enumerate(translation.steps)]
+        return [*targets, ("the formula typed below", FORMULA)]
+
+    def on_input_changed(self, event: Input.Changed) -> None:
+        if event.value.strip():
+            self.query_one("#target", Select).value = FORMULA
+
+    def on_input_submitted(self) -> None:
+        self.action_run()
+
+    def on_button_pressed(self) -> None:
+        self.action_run()
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        if action == "run":
+            return not self.busy
+        return super().check_action(action, parameters)
+
+    def action_run(self) -> None:
+        if self.busy:
+            return
+        try:
+            request = self.request()
+        except UserError as error:
+            self.app.show_error(error)
+            return
+        for table in self.query(DataTable):
+            table.clear()
+        self.query_one(FormulaProgress).update("")
+        self.query_one("#run-rollout", Button).disabled = True
+        self.roll_out(request, self.begin("starting …"))
+
+    def request(self) -> RolloutRequest:
+        """The chosen target as a request; UserError for what cannot run."""
+        from cook2ltl.kitchen.tasks import find_task, reference_formula
+
+        target = self.query_one("#target", Select).value
+        scene = self.query_one("#scene", Select).value
+        if target.startswith("task:"):
+            task = find_task(target.removeprefix("task:"))
+            formula = reference_formula(task) if self.query_one("#reference", Checkbox).value else None
+            return RolloutRequest(scene or task.scene, task, formula, self.app.model_name)
+        if target.startswith("recipe"):
+            return RolloutRequest(scene or DEFAULT_SCENE, formula=self._recipe_formula(target))
+        return RolloutRequest(scene or DEFAULT_SCENE, formula=self._typed_formula())
+
+    def _recipe_formula(self, target: str):
+        translation = self.app.translation
+        if translation is None:
+            raise UserError("There is no translation yet.", "run the recipe on the Translate screen (F2).")
+        if translation.primitives != "ai2thor":
+            raise UserError(f"The recipe was translated with the {translation.primitives} primitives; the kitchen "
+                            "executes the ai2thor primitives.",
+                            "choose “AI2-THOR primitives” on the Translate screen and run the recipe again.")
+        if target == "recipe":
+            return translation.formula
+        return translation.steps[int(target.removeprefix("recipe:"))].formula
+
+    def _typed_formula(self):
+        from cook2ltl.ltl.parser import LTLSyntaxError, parse
+
+        text = self.query_one("#formula", Input).value.strip()
+        if not text:
+            raise UserError("No formula to run.", "type one, e.g. F(pick_up(apple) & F put(apple, fridge)).")
+        try:
+            return parse(text)
+        except LTLSyntaxError as error:
+            raise UserError(f"Not a formula: {error}", "e.g. F(pick_up(apple) & F put(apple, fridge)).") from None
+
+    @work(thread=True, exclusive=True, exit_on_error=False, group="rollout")
+    def roll_out(self, request: RolloutRequest, cancel: threading.Event) -> None:
+        for message in rollout_feed(self.app.services, request, cancel):
+            self.post_message(message)
+
+    def work_ended(self) -> None:
+        self.query_one("#run-rollout", Button).disabled = False
+
+    def on_rollout_began(self, message: RolloutBegan) -> None:
+        self.query_one(FormulaProgress).begin(message)
+
+    def on_rollout_stepped(self, message: RolloutStepped) -> None:
+        step = message.step
+        log = self.query_one("#log", DataTable)
+        facts = ", ".join(sorted(atom.text for atom in step.facts))
+        log.add_row(str(step.index), Content(f"✓ {step.attempt.atom.text}"), facts,
+                    verdict_content(step.verdict.value))
+        log.move_cursor(row=log.row_count - 1)
+        objects = self.query_one("#objects", DataTable)
+        objects.clear()
+        for state in message.objects:
+            objects.add_row(state.name, state.where, state.state)
+        self.query_one(FormulaProgress).step(step)
+
+    def on_rollout_refused(self, message: RolloutRefused) -> None:
+        log = self.query_one("#log", DataTable)
+        log.add_row("", Content(f"✗ {message.attempt.atom.text}").stylize("$text-error"), message.attempt.error, "")
+        log.move_cursor(row=log.row_count - 1)
+
+    def on_rollout_done(self, message: RolloutDone) -> None:
+        self.query_one(FormulaProgress).finish(message.trial)
+        outcome = "success" if message.trial.success else "failure"
+        self.query_one(WorkStatus).show(f"{outcome}: {message.trial.rollout.verdict.value.replace('_', ' ')}")

@@ -1,0 +1,160 @@
+"""The Translate screen: a recipe editor and a run action; then the steps with their spans and frames, the
+reductions as they arrive, and each step's formula, which can be exported as JSON or text."""
+
+from __future__ import annotations
+
+import threading
+from pathlib import Path
+
+from textual import work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.widgets import Button, Footer, Header, Select, Static, TabbedContent, TabPane, TextArea
+
+from cook2ltl.errors import UserError
+from cook2ltl.ui.feeds import TranslateRequest, translation_feed
+from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone
+from cook2ltl.ui.screens.base import WorkScreen
+from cook2ltl.ui.screens.dialogs import PathDialog
+from cook2ltl.ui.widgets.formulas import FormulaList
+from cook2ltl.ui.widgets.reductions import ReductionsTable, summary
+from cook2ltl.ui.widgets.status import WorkStatus
+from cook2ltl.ui.widgets.steps_view import StepsView
+
+PRIMITIVE_SETS = (("recipe primitives", "recipe"), ("AI2-THOR primitives", "ai2thor"))
+VARIANTS = (("AR+𝔸: library, then model", "AR+A"), ("AR: model for non-primitives", "AR"),
+            ("AR*: model for every action", "AR*"))
+
+
+class TranslateScreen(WorkScreen):
+    BINDINGS = [
+        Binding("ctrl+r", "run", "Run", id="translate.run"),
+        Binding("ctrl+o", "open", "Open", id="translate.open"),
+        Binding("ctrl+s", "export", "Export", id="translate.export"),
+        Binding("ctrl+l", "toggle_syntax", "Unicode/Spot", id="translate.syntax"),
+    ]
+    PALETTE = (
+        ("Translate: run", "Parse the recipe and translate it to LTL", "run"),
+        ("Translate: open a recipe file", "Load a text file into the editor", "open"),
+        ("Translate: export", "Write the translation as JSON (.json) or text (any other name)", "export"),
+        ("Translate: Unicode / Spot syntax", "Show the formulas in the other syntax", "toggle_syntax"),
+    )
+
+    def compose(self) -> ComposeResult:
+        yield Header()
+        with Horizontal(id="translate-options", classes="options"):
+            yield Select(PRIMITIVE_SETS, value="recipe", allow_blank=False, id="primitives")
+            yield Select(VARIANTS, value="AR+A", allow_blank=False, id="variant")
+            models = self.app.services.model_names
+            yield Select([(name, name) for name in models], value=self.app.model_name, allow_blank=False, id="model")
+            yield Button("Run", variant="primary", id="run")
+            yield Button("Open…", id="open")
+        with Horizontal(id="translate-body"):
+            editor = TextArea(self.app.recipe_text, id="recipe", soft_wrap=True)
+            editor.border_title = "Recipe"
+            yield editor
+            with TabbedContent(id="results", initial="steps"):
+                with TabPane("Steps", id="steps"):
+                    with VerticalScroll():
+                        yield StepsView("Run the recipe (ctrl+r) to see its steps, spans and frames.", id="steps-view")
+                with TabPane("Reductions", id="reductions"):
+                    with Vertical():
+                        yield ReductionsTable(id="reductions-table")
+                        yield Static("", id="reduction-summary")
+                with TabPane("Formulas", id="formulas"):
+                    with VerticalScroll():
+                        yield FormulaList(id="formula-list")
+        yield WorkStatus()
+        yield Footer()
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        if action == "run":
+            return not self.busy
+        return super().check_action(action, parameters)
+
+    def on_button_pressed(self, event: Button.Pressed) -> None:
+        self.run_action(event.button.id)
+
+    def on_select_changed(self, event: Select.Changed) -> None:
+        if event.select.id == "model":
+            self.app.model_name = event.value
+
+    def action_run(self) -> None:
+        text = self.query_one("#recipe", TextArea).text
+        if not text.strip():
+            self.notify("Paste a recipe or open a file first.", severity="warning")
+            return
+        request = TranslateRequest(text, self.query_one("#primitives", Select).value,
+                                   self.query_one("#variant", Select).value, self.query_one("#model", Select).value)
+        self.query_one(StepsView).update("parsing …")
+        self.query_one(ReductionsTable).clear()
+        self.query_one("#reduction-summary", Static).update("")
+        self.query_one(FormulaList).clear()
+        self.query_one("#run", Button).disabled = True
+        self.translate(request, self.begin("starting …"))
+
+    @work(thread=True, exclusive=True, exit_on_error=False, group="translate")
+    def translate(self, request: TranslateRequest, cancel: threading.Event) -> None:
+        for message in translation_feed(self.app.services, request, cancel):
+            self.post_message(message)
+
+    def work_ended(self) -> None:
+        self.query_one("#run", Button).disabled = False
+
+    def on_recipe_parsed(self, message: RecipeParsed) -> None:
+        self.query_one(StepsView).show_recipe(message.parsed)
+        self.query_one(ReductionsTable).show_pending(message.parsed)
+
+    def on_action_reduced(self, message: ActionReduced) -> None:
+        self.query_one(ReductionsTable).show_result(message.event.done, message.event.result)
+
+    def on_step_translated(self, message: StepTranslated) -> None:
+        self.query_one(FormulaList).add_step(message.result)
+
+    def on_translation_done(self, message: TranslationDone) -> None:
+        translation = message.translation
+        self.query_one(FormulaList).finish(translation.formula)
+        self.query_one("#reduction-summary", Static).update(summary(translation.stats))
+        self.query_one(WorkStatus).show(f"done in {translation.stats.seconds:.1f} s")
+
+    def action_toggle_syntax(self) -> None:
+        formulas = self.query_one(FormulaList)
+        formulas.spot = not formulas.spot
+
+    def action_open(self) -> None:
+        self.app.push_screen(PathDialog("Open a recipe file", f"{Path.cwd()}/", "Open"), self._open)
+
+    def _open(self, path: Path | None) -> None:
+        from cook2ltl.cli.inputs import read_recipe
+
+        if path is None:
+            return
+        try:
+            text = read_recipe(str(path))
+        except UserError as error:
+            self.app.show_error(error)
+            return
+        self.app.recipe_path = path
+        self.query_one("#recipe", TextArea).load_text(text)
+        self.notify(f"opened {path}")
+
+    def action_export(self) -> None:
+        if self.app.translation is None:
+            self.notify("Nothing to export yet: run a translation first.", severity="warning")
+            return
+        stem = self.app.recipe_path.stem if self.app.recipe_path else "recipe"
+        self.app.push_screen(PathDialog("Export the translation (.json for JSON, else text)",
+                                        str(Path.cwd() / f"{stem}.ltl.json"), "Export"), self._export)
+
+    def _export(self, path: Path | None) -> None:
+        from cook2ltl.ui.export import write_translation
+
+        if path is None:
+            return
+        try:
+            write_translation(self.app.translation, path)
+        except UserError as error:
+            self.app.show_error(error)
+            return
+        self.notify(f"wrote {path}")

@@ -1,0 +1,106 @@
+"""The core backends the screens use, built on first use and kept: model loading is slow, so it happens in a
+worker the first time a run needs it, never at start-up. Tests build `Services` from fakes."""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from cook2ltl.reduce.llm import DEFAULT_MODEL
+
+if TYPE_CHECKING:
+    from cook2ltl.kitchen.executor import Kitchen
+    from cook2ltl.library import Library
+    from cook2ltl.parse.backends import DependencyParser, SpanExtractor
+    from cook2ltl.reduce.llm import LanguageModel
+
+
+@dataclass
+class Services:
+    make_spans: Callable[[], SpanExtractor]
+    make_dependencies: Callable[[], DependencyParser]
+    make_model: Callable[[str], LanguageModel]
+    library_path: Path
+    start_kitchen: Callable[[str], Kitchen]  # a started Controller (anything with step/reset/last_event/stop)
+    model_names: tuple[str, ...] = (DEFAULT_MODEL,)
+    kitchen_lock: threading.Lock = field(default_factory=threading.Lock)  # one rollout drives the kitchen at a time
+    _built: dict[str, Any] = field(default_factory=dict)
+    _lock: threading.Lock = field(default_factory=threading.Lock)
+
+    def spans(self) -> SpanExtractor:
+        return self._once("spans", self.make_spans)
+
+    def dependencies(self) -> DependencyParser:
+        return self._once("dependencies", self.make_dependencies)
+
+    def model(self, name: str) -> LanguageModel:
+        """The named model; asking for another one lets the previous one go (one LLM in memory)."""
+        with self._lock:
+            if self._built.get("model name") != name:
+                self._built.pop("model", None)
+                self._built["model"] = self.make_model(name)
+                self._built["model name"] = name
+            return self._built["model"]
+
+    def library(self) -> Library:
+        from cook2ltl.library import Library
+
+        return self._once("library", lambda: Library(self.library_path))
+
+    def kitchen(self, scene: str) -> Kitchen:
+        """The app's one kitchen, started on first use (a rollout resets it to its scene); hold kitchen_lock."""
+        return self._once("kitchen", lambda: self.start_kitchen(scene))
+
+    def close(self) -> None:
+        with self._lock:
+            library, kitchen = self._built.pop("library", None), self._built.pop("kitchen", None)
+        if library is not None:
+            library.close()
+        if kitchen is not None:
+            with self.kitchen_lock:
+                kitchen.stop()
+
+    def _once(self, key: str, build: Callable[[], Any]) -> Any:
+        with self._lock:
+            if key not in self._built:
+                self._built[key] = build()
+            return self._built[key]
+
+
+def production_services() -> Services:
+    """GLiNER, spaCy, llama.cpp, the user's library and the embedded kitchen; nothing is loaded yet."""
+    from cook2ltl import paths
+
+    def spans():
+        from cook2ltl.settings import load_settings
+        from cook2ltl.stack import span_extractor
+
+        return span_extractor(load_settings())
+
+    def dependencies():
+        from cook2ltl.stack import dependency_parser
+
+        return dependency_parser()
+
+    def model(name: str):
+        from cook2ltl.reduce.llm import load_model
+
+        return load_model(name)
+
+    def kitchen(scene: str):
+        from cook2ltl.kitchen.launcher import start_kitchen
+
+        return start_kitchen(scene, "embedded")
+
+    return Services(spans, dependencies, model, paths.library_file(), kitchen, _language_models())
+
+
+def _language_models() -> tuple[str, ...]:
+    """The GGUF models of the manifest (a TOML read), default first."""
+    from cook2ltl.models.manifest import load_manifest
+
+    names = [entry.name for entry in load_manifest().values() if entry.file.endswith(".gguf")]
+    return tuple(sorted(names, key=lambda name: name != DEFAULT_MODEL)) or (DEFAULT_MODEL,)

@@ -1,0 +1,1 @@
+"""Widgets of the app's screens; each draws one kind of core record."""

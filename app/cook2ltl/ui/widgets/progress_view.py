@@ -1,0 +1,91 @@
+"""A formula's progress during a rollout: the formula with the atoms met so far marked, what remains, the
+verdict after each action, and at the end why it stopped and whether the task's goal holds."""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from textual.content import Content
+from textual.widgets import Static
+
+if TYPE_CHECKING:
+    from cook2ltl.kitchen.rollout import TraceStep
+    from cook2ltl.kitchen.trial import Trial
+    from cook2ltl.ltl.ast import Atom, Formula
+    from cook2ltl.ui.messages import RolloutBegan
+
+VERDICT_STYLE = {"satisfied": "bold $text-success", "presumably_true": "$text-success",
+                 "presumably_false": "$text-warning", "violated": "bold $text-error"}
+MET_STYLE = "bold underline $text-success"
+
+
+def marked(formula: Formula, met: frozenset[Atom]) -> Content:
+    """The formula in Unicode with every occurrence of a met atom styled."""
+    from cook2ltl.ltl.printer import to_unicode
+
+    text = to_unicode(formula)
+    content = Content(text)
+    for atom in met:
+        pattern = rf"(?<![\w(]){re.escape(to_unicode(atom))}(?![\w(])"
+        for match in re.finditer(pattern, text):
+            content = content.stylize(MET_STYLE, match.start(), match.end())
+    return content
+
+
+def verdict_content(value: str) -> Content:
+    return Content(value.replace("_", " ")).stylize(VERDICT_STYLE[value])
+
+
+class FormulaProgress(Static):
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.header: list[Content] = []
+        self.formula: Formula | None = None
+
+    def begin(self, began: RolloutBegan) -> None:
+        title = f"task {began.task.id} · “{began.task.instruction}”" if began.task else "formula"
+        self.header = [Content(f"{title} · {began.scene}").stylize("bold")]
+        if began.plan is not None:
+            calls = " · ".join(call.text() for call in began.plan.calls) or "(no admissible plan)"
+            self.header.append(_label("plan") + Content(calls) + Content(
+                f"  [{began.plan.model}: {', '.join(began.plan.sources)}; {began.plan.seconds:.1f} s]"
+            ).stylize("$text-muted"))
+        if began.unobservable:
+            never = ", ".join(atom.text for atom in began.unobservable)
+            self.header.append(Content(f"the kitchen cannot report {never}: never true").stylize("$text-warning"))
+        self.formula = began.formula
+        self._draw(frozenset(), began.formula, "presumably_false")
+
+    def step(self, step: TraceStep) -> None:
+        self._draw(step.met, step.remaining, step.verdict.value)
+
+    def finish(self, trial: Trial) -> None:
+        from cook2ltl.kitchen.trial import explain
+
+        result = trial.rollout
+        met = result.steps[-1].met if result.steps else frozenset()
+        lines = [_label("verdict") + verdict_content(result.verdict.value) + Content(f" — {explain(result)}")]
+        if trial.goal is not None:
+            for condition, ok in trial.goal.conditions:
+                mark = Content("✓ ").stylize("$text-success") if ok else Content("✗ ").stylize("$text-error")
+                lines.append(_label("goal") + mark + Content(condition.text()))
+        outcome = Content("success").stylize("bold $text-success") if trial.success else \
+            Content("failure").stylize("bold $text-error")
+        planning = f" · {trial.plan.seconds:.1f} s planning" if trial.plan else ""
+        lines.append(outcome + Content(f" · {len(result.steps)} actions · {result.seconds:.2f} s in the kitchen"
+                                       f"{planning}").stylize("$text-muted"))
+        remaining = result.steps[-1].remaining if result.steps else result.formula
+        self._draw(met, remaining, result.verdict.value, lines)
+
+    def _draw(self, met: frozenset[Atom], remaining: Formula, verdict: str, tail: list[Content] = ()) -> None:
+        from cook2ltl.ltl.printer import to_unicode
+
+        lines = [*self.header, _label("φ") + marked(self.formula, met),
+                 _label("remaining") + Content(to_unicode(remaining)),
+                 _label("now") + verdict_content(verdict), *tail]
+        self.update(Content("\n").join(lines))
+
+
+def _label(text: str) -> Content:
+    return Content(f"{text:<10}").stylize("$text-muted")

@@ -1,0 +1,85 @@
+"""The app with fake parsers and a scripted model (tests/fakes.py, tests/reduce/fake_model.py), a real SQLite
+library in tmp_path and, for rollouts, the real embedded kitchen behind ai2thor's Controller."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from cook2ltl.ui.app import Cook2LTLApp
+from cook2ltl.ui.services import Services
+from tests.fakes import ScriptedDependencies, ScriptedSpans
+from tests.reduce.fake_model import ScriptedModel
+
+SIZE = (120, 36)
+RECIPE = "Boil the egg. Put the egg in a bowl. Boil the potato."
+FRIDGE_RECIPE = "Refrigerate the apple."
+SPANS = {
+    "Boil the egg.": [("VERB", "Boil"), ("WHAT", "the egg")],
+    "Put the egg in a bowl.": [("VERB", "Put"), ("WHAT", "the egg"), ("WHERE", "a bowl")],
+    "Boil the potato.": [("VERB", "Boil"), ("WHAT", "the potato")],
+    "Refrigerate the apple.": [("VERB", "Refrigerate"), ("WHAT", "the apple")],
+}
+ANSWERS = {
+    "boil": "pick_up(egg)\nput(egg, pot)\nput(pot, stovetop)\nturn_on(stovetop)\nwait(egg == boiled)",
+    "refrigerate": "open(fridge)\npick_up(apple)\nput(apple, fridge)\nclose(fridge)",
+}
+
+
+class Counting:
+    """A factory that counts its calls: the app must build nothing heavy before a run needs it."""
+
+    def __init__(self, build) -> None:
+        self.build, self.calls = build, 0
+
+    def __call__(self, *args):
+        self.calls += 1
+        return self.build(*args)
+
+
+@pytest.fixture
+def sandbox(tmp_path, monkeypatch) -> Path:
+    """HOME, the user data folder and the kitchen's cache in tmp_path (the Controller writes ~/.ai2thor)."""
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    monkeypatch.setenv("COOK2LTL_DATA", str(tmp_path / "data"))
+    monkeypatch.setenv("COOK2LTL_KITCHEN_CACHE", str(tmp_path / "kitchen-cache"))
+    monkeypatch.setenv("COOK2LTL_USER", "tester")
+    monkeypatch.delenv("COOK2LTL_THOR_EXECUTABLE", raising=False)
+    return tmp_path
+
+
+@pytest.fixture
+def model() -> ScriptedModel:
+    return ScriptedModel(dict(ANSWERS))
+
+
+@pytest.fixture
+def services(sandbox, model) -> Services:
+    def kitchen(scene: str):
+        from cook2ltl.kitchen.launcher import start_embedded
+
+        return start_embedded(scene)
+
+    return Services(
+        make_spans=Counting(lambda: ScriptedSpans(SPANS)),
+        make_dependencies=Counting(ScriptedDependencies),
+        make_model=Counting(lambda name: model),
+        library_path=sandbox / "library.sqlite",
+        start_kitchen=Counting(kitchen),
+        model_names=(model.name,),
+    )
+
+
+@pytest.fixture
+def make_app(services):
+    def make(text: str = RECIPE, **kwargs) -> Cook2LTLApp:
+        return Cook2LTLApp(services, text, **kwargs)
+
+    return make
+
+
+@pytest.fixture
+def anyio_backend() -> str:
+    """The async tests run on asyncio (anyio's pytest plugin; Textual runs on asyncio)."""
+    return "asyncio"

@@ -1,0 +1,152 @@
+"""The Translate screen driven by keys: a run in a thread worker posting typed messages, the steps, the
+reductions (new, primitive, cached), the formulas in both syntaxes, export, opening files, errors, cancel."""
+
+from __future__ import annotations
+
+import json
+import threading
+
+import pytest
+from textual.widgets import Button, DataTable, Input, TextArea
+
+from cook2ltl.errors import UserError
+from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone, WorkStopped
+from cook2ltl.ui.screens.dialogs import ErrorDialog, PathDialog
+from cook2ltl.ui.screens.translate import TranslateScreen
+from cook2ltl.ui.widgets.formulas import FormulaList
+from cook2ltl.ui.widgets.status import WorkStatus
+from cook2ltl.ui.widgets.steps_view import StepsView
+
+from .conftest import SIZE
+
+pytestmark = pytest.mark.anyio
+
+
+def text(widget) -> str:
+    return str(widget.render())
+
+
+def once(messages: list) -> list:
+    """Each message once: the hook sees a bubbling message at every node it reaches."""
+    return list({id(m): m for m in messages}.values())
+
+
+async def finish_work(pilot) -> None:
+    await pilot.app.workers.wait_for_complete()
+    await pilot.pause()
+
+
+async def test_a_run_shows_steps_reductions_and_formulas(make_app, services, model):
+    posted = []
+    app = make_app()
+    async with app.run_test(size=SIZE, message_hook=posted.append) as pilot:
+        assert services.make_spans.calls == services.make_model.calls == 0  # nothing loaded before a run
+        await pilot.press("ctrl+r")
+        await finish_work(pilot)
+        kinds = [type(m) for m in once(posted) if isinstance(m, (RecipeParsed, ActionReduced, StepTranslated,
+                                                                 TranslationDone))]
+        assert kinds == [RecipeParsed, ActionReduced, StepTranslated, ActionReduced, StepTranslated,
+                         ActionReduced, StepTranslated, TranslationDone]
+        screen = app.screen
+        steps = text(screen.query_one(StepsView))
+        assert "boil(the egg)" in steps and "put(the egg, a bowl)" in steps and "boil(the potato)" in steps
+        table = screen.query_one("#reductions-table", DataTable)
+        rows = [[str(cell) for cell in table.get_row_at(i)] for i in range(table.row_count)]
+        assert [row[2:4] for row in rows] == [["boil(egg)", "new #1"], ["put(egg, bowl)", "primitive"],
+                                              ["boil(potato)", "cached #1"]]
+        assert rows[2][5].startswith("pick_up(potato) · put(potato, pot)")  # the library body instantiated
+        assert model.calls == 1
+        assert "3 actions: 1 primitive, 1 cached, 1 by the model" in text(screen.query_one("#reduction-summary"))
+        formulas = screen.query_one(FormulaList)
+        assert "◇" in text(formulas) and "F(" not in text(formulas)
+        await pilot.press("ctrl+l")
+        assert "F(" in text(formulas) and "◇" not in text(formulas)
+        assert app.translation is not None and len(app.translation.steps) == 3
+        assert not screen.busy and not screen.query_one("#run", Button).disabled
+
+
+async def test_export_writes_json_and_text(make_app, tmp_path):
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await finish_work(pilot)
+        for name in ("out.json", "out.txt"):
+            await pilot.press("ctrl+s")
+            dialog = app.screen
+            assert isinstance(dialog, PathDialog)
+            dialog.query_one(Input).value = str(tmp_path / name)
+            await pilot.press("enter")
+            await pilot.pause()
+    exported = json.loads((tmp_path / "out.json").read_text())
+    assert [step["text"] for step in exported["steps"]] == ["Boil the egg.", "Put the egg in a bowl.",
+                                                           "Boil the potato."]
+    plain = (tmp_path / "out.txt").read_text()
+    assert "Boil the potato." in plain and "\x1b[" not in plain
+
+
+async def test_opening_a_file_loads_the_editor_and_a_missing_one_says_so(make_app, tmp_path):
+    recipe = tmp_path / "soup.txt"
+    recipe.write_text("Boil the potato.\n")
+    app = make_app(text="")
+    async with app.run_test(size=SIZE) as pilot:
+        for path in (recipe, tmp_path / "missing.txt"):
+            await pilot.press("ctrl+o")
+            app.screen.query_one(Input).value = str(path)
+            await pilot.press("enter")
+            await pilot.pause()
+        assert isinstance(app.screen, ErrorDialog)
+        assert "No recipe file at" in text(app.screen.query_one("#error-message"))
+        await pilot.press("escape")
+        assert app.screen.query_one("#recipe", TextArea).text == "Boil the potato.\n"
+        assert app.recipe_path == recipe
+
+
+async def test_a_failing_run_shows_a_dialog_not_a_traceback(make_app, services):
+    def broken():
+        raise UserError("The model 'gliner-cook2ltl' is not provisioned.", "run `make models`.")
+
+    services.make_spans = broken
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await finish_work(pilot)
+        dialog = app.screen
+        assert isinstance(dialog, ErrorDialog)
+        assert "not provisioned" in text(dialog.query_one("#error-message"))
+        assert "make models" in text(dialog.query_one("#error-hint"))
+        await pilot.press("escape")
+        assert isinstance(app.screen, TranslateScreen) and not app.screen.busy
+        assert "failed" in text(app.screen.query_one(WorkStatus).query_one("#status-text"))
+
+
+async def test_cancel_stops_after_the_current_action(make_app, model):
+    entered, release = threading.Event(), threading.Event()
+    answer = model.complete
+
+    def slow(*args, **kwargs):
+        entered.set()
+        release.wait(10)
+        return answer(*args, **kwargs)
+
+    model.complete = slow
+    posted = []
+    app = make_app()
+    async with app.run_test(size=SIZE, message_hook=posted.append) as pilot:
+        await pilot.press("ctrl+r")
+        assert entered.wait(10)
+        assert app.screen.busy
+        await pilot.press("ctrl+g")
+        release.set()
+        await finish_work(pilot)
+        assert any(isinstance(m, WorkStopped) for m in posted)
+        assert not any(isinstance(m, TranslationDone) for m in posted)
+        assert sum(isinstance(m, ActionReduced) for m in once(posted)) == 1
+        assert text(app.screen.query_one("#status-text")) == "stopped"
+
+
+async def test_an_empty_recipe_is_not_run(make_app, services):
+    app = make_app(text="  ")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause()
+        assert not app.screen.busy and services.make_spans.calls == 0
