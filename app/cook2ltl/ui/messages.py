@@ -18,7 +18,7 @@ if TYPE_CHECKING:
     from cook2ltl.kitchen.rollout import TraceStep
     from cook2ltl.kitchen.tasks import Task
     from cook2ltl.kitchen.trial import Trial
-    from cook2ltl.library import LibraryEntry
+    from cook2ltl.library import LibraryEntry, Version
     from cook2ltl.ltl.ast import Atom, Formula
     from cook2ltl.pipeline import ActionDone, StepResult, Translation
 
@@ -72,9 +72,18 @@ class TranslationDone(Message):
 # --- library ---------------------------------------------------------------------------------------------
 
 class LibraryLoaded(ScreenMessage):
-    def __init__(self, entries: tuple[LibraryEntry, ...], select: int | None = None) -> None:
+    """The entries a search found (None when the query could not be read: `problem` says why)."""
+
+    def __init__(self, entries: tuple[LibraryEntry, ...] | None, select: int | None = None,
+                 problem: str = "") -> None:
         super().__init__()
-        self.entries, self.select = entries, select
+        self.entries, self.select, self.problem = entries, select, problem
+
+
+class EntryHistory(ScreenMessage):
+    def __init__(self, entry_id: int, versions: tuple[Version, ...]) -> None:
+        super().__init__()
+        self.entry_id, self.versions = entry_id, versions
 
 
 # --- rollout ---------------------------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-"""Small modal dialogs: an error with its hint, and a path to open or write."""
+"""Small modal dialogs: an error with its hint, a question to confirm, and a path to open or write."""
 
 from __future__ import annotations
 
@@ -31,6 +31,28 @@ class ErrorDialog(ModalScreen[None]):
 
     def on_button_pressed(self) -> None:
         self.dismiss()
+
+
+class ConfirmDialog(ModalScreen[bool]):
+    """A yes/no question about something risky; dismissed with True only when confirmed."""
+
+    BINDINGS = [Binding("escape", "dismiss(False)", "Cancel", id="dialog.cancel")]
+
+    def __init__(self, title: str, details: str, question: str, action: str) -> None:
+        super().__init__(classes="dialog")
+        self.title_text, self.details, self.question, self.action = title, details, question, action
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="confirm-dialog", classes="dialog-box"):
+            yield Label(self.title_text, classes="dialog-title")
+            yield Static(self.details, id="confirm-details", markup=False)
+            yield Static(self.question, id="confirm-question", markup=False)
+            with Horizontal(classes="dialog-buttons"):
+                yield Button(self.action, variant="warning", id="confirm")
+                yield Button("Cancel", variant="primary", id="cancel")
+
+    def on_button_pressed(self, event: Button.Pressed) -> None:
+        self.dismiss(event.button.id == "confirm")
 
 
 class PathDialog(ModalScreen[Path | None]):

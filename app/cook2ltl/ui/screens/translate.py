@@ -28,6 +28,7 @@ VARIANTS = (("AR+𝔸: library, then model", "AR+A"), ("AR: model for non-primit
 
 
 class TranslateScreen(WorkScreen):
+    AUTO_FOCUS = "#recipe"  # ready for a paste
     BINDINGS = [
         Binding("ctrl+r", "run", "Run", id="translate.run"),
         Binding("ctrl+o", "open", "Open", id="translate.open"),

@@ -1,0 +1,71 @@
+"""One library entry in full: its body, its provenance and review, the kitchen check, and every version."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from textual.content import Content
+from textual.widgets import Static
+
+if TYPE_CHECKING:
+    from cook2ltl.library import LibraryEntry, Version
+
+STATUS_STYLE = {"pending": "$text-warning", "approved": "$text-success", "rejected": "$text-error"}
+CHECK_STYLE = {"passed": "$text-success", "failed": "$text-error", "unchecked": "$text-muted"}
+EMPTY = "No entry: the library grows as translations reduce actions with the model."
+
+
+def status_content(status: str) -> Content:
+    return Content(status).stylize(STATUS_STYLE[status])
+
+
+def check_content(validation: str) -> Content:
+    return Content(validation).stylize(CHECK_STYLE.get(validation, "$text-muted"))
+
+
+class EntryDetail(Static):
+    """Blank until an entry is chosen; the versions arrive a moment later, read by a worker."""
+
+    def show(self, entry: LibraryEntry | None, versions: tuple[Version, ...] = ()) -> None:
+        if entry is None:
+            self.update(EMPTY)
+            return
+        parts = [_body(entry), _review(entry)]
+        if versions:
+            parts.append(_history(versions))
+        self.update(Content("\n\n").join(parts))
+
+
+def _body(entry: LibraryEntry) -> Content:
+    title = Content(entry.action).stylize("bold") + Content(f"  #{entry.id} · version {entry.version} · "
+                                                            f"{entry.primitives} primitives").stylize("$text-muted")
+    return title + Content("\n") + Content(entry.body).stylize("$text-accent")
+
+
+def _review(entry: LibraryEntry) -> Content:
+    reviewed = f"  by {entry.reviewed_by} at {entry.reviewed_at}" if entry.reviewed_by else ""
+    lines = [
+        _label("status") + status_content(entry.status.value) + Content(reviewed).stylize("$text-muted"),
+        _label("kitchen") + check_content(entry.validation),
+        *(Content(f"{'':<11}✗ {problem}").stylize("$text-error") for problem in entry.problems),
+        _label("learnt by") + Content(f"{entry.model} · prompt {entry.prompt_hash[:12] or '—'} · {entry.created}"),
+    ]
+    if entry.example:
+        example = ", ".join(f"{placeholder} = {value}" for placeholder, value in entry.example)
+        lines.append(_label("learnt for") + Content(example))
+    return Content("\n").join(lines)
+
+
+def _history(versions: tuple[Version, ...]) -> Content:
+    lines = [Content("history").stylize("bold")]
+    for version in reversed(versions):  # newest first
+        note = f" · {version.note}" if version.note else ""
+        lines.append(Content(f"v{version.version:<3}").stylize("bold") + Content(f"{version.at} {version.author}")
+                     + Content(note).stylize("$text-muted") + Content("  ") + check_content(version.validation))
+        if version is not versions[-1]:
+            lines.append(Content("    " + version.body.replace("\n", " · ")).stylize("$text-muted"))
+    return Content("\n").join(lines)
+
+
+def _label(text: str) -> Content:
+    return Content(f"{text:<11}").stylize("$text-muted")

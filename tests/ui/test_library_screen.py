@@ -1,0 +1,137 @@
+"""The Library screen on a real SQLite library: the table, full-text search and the status filter, the detail
+pane with provenance and history, approve (and the confirmation for a failed kitchen check), reject, an edit
+checked as you type, and undo."""
+
+from __future__ import annotations
+
+import pytest
+from textual.widgets import Button, DataTable, Input, Select, TextArea
+
+from cook2ltl.library import Library, Status
+from cook2ltl.ui.screens.dialogs import ConfirmDialog
+from cook2ltl.ui.screens.entry_editor import EntryEditor
+from cook2ltl.ui.widgets.entry_detail import EntryDetail
+
+from .conftest import SIZE
+
+pytestmark = pytest.mark.anyio
+FAILED = ("line 1 put(egg, pan): not holding egg",)
+
+
+@pytest.fixture
+def library(services):
+    store = Library(services.library_path)
+    store.add("recipe", "boil", ("what",), "pick_up($what)\nput($what, pot)\nturn_on(stovetop)", "qwen", "h1",
+              validation="passed", example={"$what": "egg"})
+    store.add("recipe", "whisk", ("what",), "stir($what)", "qwen", "h2")
+    store.add("recipe", "fry", ("what",), "put($what, pan)", "qwen", "h3", validation="failed", problems=FAILED)
+    yield store
+    store.close()
+
+
+def rows(screen) -> list[list[str]]:
+    table = screen.query_one("#entries", DataTable)
+    return [[str(cell) for cell in table.get_row_at(i)] for i in range(table.row_count)]
+
+
+async def settle(pilot) -> None:
+    await pilot.app.workers.wait_for_complete()
+    await pilot.pause()
+
+
+async def choose(pilot, verb: str) -> None:
+    screen = pilot.app.screen
+    table = screen.query_one("#entries", DataTable)
+    table.move_cursor(row=[row[3] for row in rows(screen)].index(f"{verb}(what)"))
+    table.focus()
+    await settle(pilot)
+
+
+async def open_library(make_app):
+    app = make_app()
+    return app
+
+
+async def test_entries_search_filter_and_detail(make_app, library):
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f3")
+        await settle(pilot)
+        screen = app.screen
+        assert [row[:4] for row in rows(screen)] == [["1", "pending", "passed", "boil(what)"],
+                                                     ["2", "pending", "unchecked", "whisk(what)"],
+                                                     ["3", "pending", "failed", "fry(what)"]]
+        detail = str(screen.query_one(EntryDetail).render())
+        assert "put($what, pot)" in detail and "$what = egg" in detail and "v1" in detail and "learnt" in detail
+        await pilot.press("slash", *"stir")
+        await settle(pilot)
+        assert [row[3] for row in rows(screen)] == ["whisk(what)"]  # found by its body
+        screen.query_one("#search", Input).value = 'put($'  # not an FTS query: said beside the box
+        await settle(pilot)
+        assert "Cannot search" in str(screen.query_one("#library-count").render())
+        assert [row[3] for row in rows(screen)] == ["whisk(what)"]
+        screen.query_one("#search", Input).value = ""
+        await settle(pilot)
+        screen.query_one("#shown", Select).value = "failed"
+        await pilot.pause()
+        assert [row[3] for row in rows(screen)] == ["fry(what)"]
+        assert "not holding egg" in str(screen.query_one(EntryDetail).render())
+
+
+async def test_approve_reject_and_a_failed_check_needs_confirming(make_app, library):
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f3")
+        await settle(pilot)
+        await choose(pilot, "boil")
+        await pilot.press("a")
+        await settle(pilot)
+        approved = library.get(1)
+        assert approved.status == Status.APPROVED and approved.reviewed_by == "tester"
+        assert rows(app.screen)[0][1] == "approved" and rows(app.screen)[0][7] == "tester"
+        await choose(pilot, "fry")
+        await pilot.press("a")
+        assert isinstance(app.screen, ConfirmDialog)
+        await pilot.press("escape")
+        await settle(pilot)
+        assert library.get(3).status == Status.PENDING
+        await pilot.press("a")
+        await pilot.click("#confirm")
+        await settle(pilot)
+        assert library.get(3).status == Status.APPROVED
+        await choose(pilot, "whisk")
+        await pilot.press("r")
+        await settle(pilot)
+        assert library.get(2).status == Status.REJECTED
+        await pilot.press("e")  # a rejected entry stays as history
+        assert not isinstance(app.screen, EntryEditor)
+
+
+async def test_an_edit_is_checked_as_you_type_saved_as_a_version_and_undone(make_app, library):
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f3")
+        await settle(pilot)
+        await choose(pilot, "whisk")
+        await pilot.press("e")
+        editor = app.screen
+        assert isinstance(editor, EntryEditor)
+        body = editor.query_one("#body", TextArea)
+        body.text = "stir($where)\nfold($what)"
+        await pilot.pause()
+        problems = str(editor.query_one("#problems").render())
+        assert "$where is not a parameter" in problems and "fold with 1 argument(s)" in problems
+        assert editor.query_one("#save", Button).disabled
+        body.text = "pick_up($what)\nstir($what)"
+        await pilot.pause()
+        assert "✓" in str(editor.query_one("#problems").render())
+        await pilot.press("ctrl+s")
+        await settle(pilot)
+        edited = library.get(2)
+        assert edited.body == "pick_up($what)\nstir($what)" and edited.version == 2
+        assert edited.status == Status.PENDING and edited.reviewed_by is None
+        assert [(v.version, v.author) for v in library.history(2)] == [(1, "qwen"), (2, "tester")]
+        assert "v2" in str(app.screen.query_one(EntryDetail).render())
+        await pilot.press("u")
+        await settle(pilot)
+        assert library.get(2).body == "stir($what)" and library.get(2).version == 3
