@@ -1,7 +1,13 @@
-"""`cook2ltl library`: what the robot will reuse, for a lab to review (list, show, approve, reject)."""
+"""`cook2ltl library`: what the robot will reuse, for a lab to review, correct and share.
+
+list, show, approve, reject, edit, history, undo, export, import. Every change records who made it (`--by`,
+default $COOK2LTL_USER or the login name) and when; an edited body is checked against the primitive set and
+run in the embedded kitchen before it is stored.
+"""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 from typing import Optional
 
@@ -10,10 +16,13 @@ from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
-library_app = typer.Typer(help="Review the action library: list, show, approve, reject.", no_args_is_help=True)
+library_app = typer.Typer(help="Review the action library: list, show, approve, reject, edit, history, undo, "
+                               "export, import.", no_args_is_help=True)
 LibraryOption = typer.Option(None, "--library", help="Action library file (default: $COOK2LTL_LIBRARY, "
                                                      "else library.sqlite in the user data folder).")
+ByOption = typer.Option(None, "--by", help="Who makes the change (default: $COOK2LTL_USER, else the login name).")
 STATUS_STYLE = {"pending": "yellow", "approved": "green", "rejected": "dim"}
+CHECK_STYLE = {"passed": "green", "failed": "bold red", "unchecked": "dim"}
 
 
 def _open(library: Path | None):
@@ -23,56 +32,208 @@ def _open(library: Path | None):
     return Library(library or paths.library_file())
 
 
+def _by(by: str | None) -> str:
+    from cook2ltl.library import reviewer
+
+    return by or reviewer()
+
+
 @library_app.command("list")
 def list_command(library: Optional[Path] = LibraryOption,
-                 status: Optional[str] = typer.Option(None, help="Only pending, approved or rejected entries.")) -> None:
-    """Every entry: id, primitive set, action, status, and the model that wrote it."""
+                 status: Optional[str] = typer.Option(None, help="Only pending, approved or rejected entries."),
+                 search: Optional[str] = typer.Option(None, help="Only entries whose verb or body match these words "
+                                                                 "(full-text: boil pot, pick*, \"put($what\"), "
+                                                                 "best match first.")) -> None:
+    """Every entry: id, primitive set, action, status, kitchen check, version, reviewer and model."""
+    if status is not None and status not in STATUS_STYLE:
+        from cook2ltl.errors import UserError
+
+        raise UserError(f"--status {status!r} is not one of {', '.join(STATUS_STYLE)}.", "leave it out to list all.")
     store = _open(library)
-    table = Table("id", "set", "action", "status", "model", "created", title=str(store.path))
-    for entry in store.entries():
+    entries = store.search(search) if search else store.entries()
+    table = Table("id", "set", "action", "status", "check", "v", "reviewed", "model", title=str(store.path))
+    for entry in entries:
         if status and entry.status.value != status:
             continue
-        table.add_row(str(entry.id), entry.primitives, escape(f"{entry.verb}({', '.join(entry.signature)})"),
-                      f"[{STATUS_STYLE[entry.status.value]}]{entry.status.value}[/]", entry.model, entry.created)
-    Console().print(table)
+        reviewed = f"{entry.reviewed_by} {entry.reviewed_at[:10]}" if entry.reviewed_by else ""
+        table.add_row(str(entry.id), entry.primitives, escape(entry.action), _status(entry.status.value),
+                      f"[{CHECK_STYLE[entry.validation]}]{entry.validation}[/]", str(entry.version),
+                      escape(reviewed), escape(entry.model))
+    console = Console()
+    console.print(table if table.row_count else f"no entries in {store.path}" + (
+        f" match {search!r}" if search else "") + (f" with status {status}" if status else ""))
 
 
 @library_app.command("show")
 def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
-    """One entry's body and provenance."""
-    entry = _find(_open(library), entry_id)
-    console = Console()
-    console.print(f"[bold]{escape(entry.verb)}[/bold]({escape(', '.join(entry.signature))})  "
-                  f"[{STATUS_STYLE[entry.status.value]}]{entry.status.value}[/]")
-    console.print(escape(entry.body), highlight=False)
-    console.print(f"[dim]set {entry.primitives} · model {entry.model} · prompt {entry.prompt_hash[:12]} · "
-                  f"{entry.created}[/dim]")
+    """One entry: body, status and reviewer, kitchen check and its problems, provenance, version."""
+    entry = _open(library).get(entry_id)
+    console = Console(highlight=False)
+    review = (f" by {escape(entry.reviewed_by)} at {entry.reviewed_at}" if entry.reviewed_by
+              else "" if entry.status.value != "pending" else ", not reviewed yet")
+    console.print(f"[bold]{escape(entry.action)}[/bold]  {_status(entry.status.value)}{review}")
+    console.print(f"version {entry.version} · kitchen check [{CHECK_STYLE[entry.validation]}]{entry.validation}[/]")
+    for problem in entry.problems:
+        console.print(f"  [red]✗[/red] {escape(problem)}")
+    console.print()
+    console.print(escape(entry.body))
+    console.print()
+    if entry.example:
+        console.print("[dim]learnt from " + escape(", ".join(f"{k} = {v}" for k, v in entry.example)) + "[/dim]")
+    console.print(f"[dim]set {escape(entry.primitives)} · model {escape(entry.model)} · prompt "
+                  f"{entry.prompt_hash[:12]} · created {entry.created}[/dim]")
 
 
 @library_app.command("approve")
-def approve_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
-    """Mark an entry as reviewed and good."""
-    _set(entry_id, "approved", library)
+def approve_command(entry_id: int, library: Optional[Path] = LibraryOption, by: Optional[str] = ByOption,
+                    force: bool = typer.Option(False, "--force", help="Approve even a body that failed the kitchen "
+                                                                      "check.")) -> None:
+    """Mark an entry as reviewed and good: lab mode (--approved-only) reuses only approved entries."""
+    _set(entry_id, "approved", library, by, force)
 
 
 @library_app.command("reject")
-def reject_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
+def reject_command(entry_id: int, library: Optional[Path] = LibraryOption, by: Optional[str] = ByOption) -> None:
     """Never reuse an entry: the action is reduced anew the next time it is met."""
-    _set(entry_id, "rejected", library)
+    _set(entry_id, "rejected", library, by, False)
 
 
-def _set(entry_id: int, status: str, library: Path | None) -> None:
-    from cook2ltl.library.store import Status
+def _set(entry_id: int, status: str, library: Path | None, by: str | None, force: bool) -> None:
+    entry = _open(library).set_status(entry_id, status, by=_by(by), force=force)
+    Console(highlight=False).print(f"entry {entry_id} {escape(entry.action)}: {_status(status)} by "
+                                   f"{escape(entry.reviewed_by)}")
+
+
+@library_app.command("edit")
+def edit_command(entry_id: int,
+                 body_file: str = typer.Option(..., "--body-file", help="The new body, one call per line; - reads "
+                                                                        "it from standard input."),
+                 library: Optional[Path] = LibraryOption, by: Optional[str] = ByOption,
+                 note: str = typer.Option("", help="Why the body changed, kept in the history."),
+                 keep_failing: bool = typer.Option(False, "--keep-failing",
+                                                   help="Save the body even if it fails the kitchen check."),
+                 validate: bool = typer.Option(True, "--validate/--no-validate",
+                                               help="Run the body in the embedded kitchen (else: unchecked)."),
+                 primitives: Optional[str] = typer.Option(
+                     None, help="The primitive set file of an entry in a lab's own set (built-ins load by name)."),
+                 ) -> None:
+    """Replace an entry's body: checked line by line, run in the kitchen, then stored as a new version, pending."""
+    from cook2ltl.library.body_check import body_problems
+    from cook2ltl.library.recheck import Recheck, live_verbs
 
     store = _open(library)
-    store.set_status(entry_id, Status(status))
-    Console().print(f"entry {entry_id}: {status}")
+    entry = store.get(entry_id)
+    body = _read_body(body_file)
+    console, errors = Console(highlight=False), Console(stderr=True, highlight=False)
+    if body == entry.body:
+        console.print(f"entry {entry_id}: the body is unchanged; nothing saved")
+        return
+    primitive_set = _primitive_set(primitives or entry.primitives, entry.primitives)
+    verbs = live_verbs(store, entry.primitives)
+    problems = body_problems(body, entry.verb, entry.signature, primitive_set, verbs)
+    if problems:
+        for problem in problems:
+            errors.print(f"[bold red]✗[/bold red] {escape(problem)}")
+        errors.print(f"nothing saved: entry {entry_id} keeps version {entry.version}")
+        raise typer.Exit(2)
+    checked = _kitchen_check(entry, body, primitive_set, verbs) if validate else Recheck("unchecked", ())
+    for problem in checked.problems:
+        console.print(f"  [red]✗[/red] {escape(problem)}")
+    if checked.validation == "failed" and not keep_failing:
+        errors.print(f"[bold red]the body fails the kitchen check[/bold red]; nothing saved "
+                     f"(--keep-failing saves it anyway)")
+        raise typer.Exit(1)
+    edited = store.edit(entry_id, body, _by(by), checked.validation, checked.problems, note)
+    console.print(f"entry {entry_id} {escape(edited.action)}: version {edited.version}, kitchen check "
+                  f"[{CHECK_STYLE[edited.validation]}]{edited.validation}[/], {_status('pending')} review")
 
 
-def _find(store, entry_id: int):
+def _read_body(body_file: str) -> str:
     from cook2ltl.errors import UserError
 
-    for entry in store.entries():
-        if entry.id == entry_id:
-            return entry
-    raise UserError(f"No entry {entry_id} in the action library {store.path}.", "`cook2ltl library list` shows them.")
+    try:
+        text = sys.stdin.read() if body_file == "-" else Path(body_file).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        raise UserError(f"Cannot read the body from {body_file}: {getattr(error, 'strerror', None) or error}.",
+                        "give a text file with one call per line, or - to read standard input.") from error
+    return text.strip()
+
+
+def _primitive_set(choice: str, name: str):
+    from cook2ltl.errors import UserError
+    from cook2ltl.reduce.primitives import load_primitives
+
+    primitive_set = load_primitives(choice)
+    if primitive_set.name != name:
+        raise UserError(f"The entry is written in the primitive set {name!r}, not {primitive_set.name!r}.",
+                        f"give --primitives the file of the set {name!r}.")
+    return primitive_set
+
+
+def _kitchen_check(entry, body, primitive_set, verbs):
+    from cook2ltl.library.recheck import Recheck, recheck
+    from cook2ltl.reduce.validation import KitchenValidator, unsupported
+
+    missing = unsupported(primitive_set)
+    if missing:
+        return Recheck("unchecked", (f"not checked in the kitchen: it has no action for {', '.join(missing)}",))
+    with Console(stderr=True).status("running the body in the kitchen …"), KitchenValidator(primitive_set) as kitchen:
+        return recheck(entry, body, primitive_set, verbs, kitchen)
+
+
+@library_app.command("history")
+def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
+    """Every body the entry had, who wrote it and when; `undo` brings the one before back."""
+    store = _open(library)
+    entry = store.get(entry_id)
+    table = Table("v", "at", "by", "check", "note", "body", title=f"entry {entry_id} {escape(entry.action)}",
+                  show_lines=True)
+    for version in store.history(entry_id):
+        table.add_row(str(version.version), version.at[:16].replace("T", " "), escape(version.author),
+                      f"[{CHECK_STYLE[version.validation]}]{version.validation}[/]", escape(version.note),
+                      escape(version.body))
+    Console().print(table)
+
+
+@library_app.command("undo")
+def undo_command(entry_id: int, library: Optional[Path] = LibraryOption, by: Optional[str] = ByOption) -> None:
+    """Bring back the body before the current one, as a new version for review; nothing is lost."""
+    store = _open(library)
+    entry = store.undo(entry_id, _by(by))
+    restored = store.history(entry_id)[-1].restores
+    Console(highlight=False).print(
+        f"entry {entry_id} {escape(entry.action)}: the body of version {restored} is back as version {entry.version}, "
+        f"kitchen check [{CHECK_STYLE[entry.validation]}]{entry.validation}[/], {_status('pending')} review")
+
+
+@library_app.command("export")
+def export_command(file: Path, library: Optional[Path] = LibraryOption) -> None:
+    """Write every entry with its history to a JSON file, for another lab or robot."""
+    from cook2ltl.library.exchange import export_library
+
+    store = _open(library)
+    count = export_library(store, file)
+    Console(highlight=False).print(f"{count} entr{'y' if count == 1 else 'ies'} from {store.path} written to {file}")
+
+
+@library_app.command("import")
+def import_command(file: Path, library: Optional[Path] = LibraryOption, by: Optional[str] = ByOption,
+                   replace_pending: bool = typer.Option(False, "--replace-pending",
+                                                        help="A pending entry with another body gets the file's "
+                                                             "body as a new version (approved ones are never "
+                                                             "replaced).")) -> None:
+    """Add the entries of an export file: new ones added, the same ones left, conflicts reported, never overwritten."""
+    from cook2ltl.library.exchange import import_library
+
+    report = import_library(_open(library), file, _by(by), replace_pending)
+    console = Console(highlight=False)
+    for heading, items, style in (("added", report.added, "green"), ("replaced", report.replaced, "yellow"),
+                                  ("conflict", report.conflicts, "bold red")):
+        for item in items:
+            console.print(f"[{style}]{heading}[/] {escape(item)}")
+    console.print(f"{len(report.added)} added, {len(report.unchanged)} unchanged, {len(report.replaced)} replaced, "
+                  f"{len(report.conflicts)} conflict(s)")
+
+
+def _status(status: str) -> str:
+    return f"[{STATUS_STYLE[status]}]{status}[/]"

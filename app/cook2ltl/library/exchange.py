@@ -114,7 +114,8 @@ def read_export(path: Path) -> list[tuple[LibraryEntry, tuple[Version, ...]]]:
     except UnicodeDecodeError as error:
         raise UserError(f"{path} is not a JSON library export (it is not text).", HINT) from error
     except OSError as error:
-        raise UserError(f"Cannot read {path}: {error.strerror or error}.", "give the path of an export file.") from error
+        raise UserError(f"Cannot read {path}: {error.strerror or error}.",
+                        "give the path of an export file.") from error
     try:
         data = json.loads(text)
     except json.JSONDecodeError as error:
