@@ -6,6 +6,10 @@
     [ner.labels]                               # that checkpoint's names for the six categories
     VERB = "action"
     WHAT = "ingredient or utensil"
+    [limits]                                   # what one run accepts; larger inputs are refused with a message
+    recipe_bytes = 200000
+    steps = 500
+    llm_seconds = 120                          # wall-clock bound of one reduction by the language model
 """
 
 from __future__ import annotations
@@ -27,8 +31,18 @@ class NerSettings:
 
 
 @dataclass(frozen=True)
+class Limits:
+    """Bounds on one run: a recipe is a page or a few, not a book, and no model call may hang a batch."""
+
+    recipe_bytes: int = 200_000  # the 50 paper recipes are under 2 kB each
+    steps: int = 500
+    llm_seconds: float = 120.0  # a reduction takes 1-15 s on 2 cores (README)
+
+
+@dataclass(frozen=True)
 class Settings:
     ner: NerSettings = NerSettings()
+    limits: Limits = Limits()
     source: Path | None = None
 
 
@@ -48,4 +62,20 @@ def load_settings(path: Path | None = None) -> Settings:
     except (ValueError, TypeError) as error:
         raise UserError(f"{path}: bad [ner] setting: {error}",
                         f"labels are keyed by {', '.join(Label)}; threshold is a number.") from error
-    return Settings(ner=NerSettings(checkpoint, labels, threshold), source=path)
+    return Settings(ner=NerSettings(checkpoint, labels, threshold), limits=_limits(raw.get("limits", {}), path),
+                    source=path)
+
+
+def _limits(raw: dict, path: Path) -> Limits:
+    unknown = set(raw) - set(Limits.__dataclass_fields__)
+    if unknown:
+        raise UserError(f"{path}: unknown [limits] setting {', '.join(sorted(unknown))}.",
+                        f"the limits are {', '.join(Limits.__dataclass_fields__)}.")
+    values = {}
+    for name, default in vars(Limits()).items():
+        value = raw.get(name, default)
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
+            raise UserError(f"{path}: [limits] {name} = {value!r} is not a positive number.",
+                            f"the default is {default}.")
+        values[name] = type(default)(value)
+    return Limits(**values)

@@ -2,6 +2,10 @@
 
 llama_cpp is imported only when the first completion is asked for, so importing this module is instant
 and a run that finds every action in the library never loads a model.
+
+A completion is bounded in tokens (the caller's `max_tokens`) and in time (`time_limit`), and stops at once
+when the model's `cancel` event is set; a stopped completion raises instead of returning half a plan, so
+nothing cut short is ever cached in the library.
 """
 
 from __future__ import annotations
@@ -9,6 +13,7 @@ from __future__ import annotations
 import ctypes
 import hashlib
 import os
+import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -20,6 +25,15 @@ from cook2ltl.reduce.model import Usage
 DEFAULT_MODEL = "qwen2.5-coder-1.5b"  # chosen by measurement: see the README's "Action reduction"
 SEED = 4242
 CONTEXT_TOKENS = 4096
+DEFAULT_TIME_LIMIT = 120.0  # seconds; the settings' [limits] llm_seconds
+
+
+class GenerationStopped(UserError):
+    """A completion ran past its time limit."""
+
+
+class GenerationCancelled(GenerationStopped):
+    """A completion was cancelled through the model's `cancel` event (a UI's cancel button)."""
 
 
 @dataclass(frozen=True)
@@ -51,13 +65,15 @@ class LlamaModel:
     """
 
     def __init__(self, name: str, path: Path, seed: int = SEED, threads: int | None = None,
-                 state_dir: Path | None = None) -> None:
+                 state_dir: Path | None = None, time_limit: float = DEFAULT_TIME_LIMIT) -> None:
         self.name = name
         self.path = path
         self.seed = seed
         self.threads = threads or os.cpu_count() or 1
         self.state_dir = state_dir
         self.restored = False  # whether the last static part came from disk
+        self.time_limit = time_limit
+        self.cancel = threading.Event()  # a caller may replace it with its own job's event
         self._llama = None
 
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
@@ -74,24 +90,36 @@ class LlamaModel:
         # Tokenised apart, so the static tokens never depend on what follows them.
         prefix = llama.tokenize(static.encode())
         tokens = prefix + llama.tokenize(dynamic.encode(), add_bos=False)
-        self._keep_only(llama, prefix, static)
-        criteria = None
-        if stop is not None:
-            start = len(tokens)
-            criteria = StoppingCriteriaList([
-                lambda ids, _: stop(llama.detokenize(ids[start:].tolist()).decode("utf-8", errors="ignore"))])
+        deadline = started + self.time_limit
+        self._check(deadline)
+        self._keep_only(llama, prefix, static, deadline)
+        start = len(tokens)
+
+        def stopped(ids, _) -> bool:
+            if self.cancel.is_set() or time.perf_counter() > deadline:
+                return True
+            return stop is not None and stop(llama.detokenize(ids[start:].tolist()).decode("utf-8", errors="ignore"))
+
         result = llama.create_completion(
             tokens, max_tokens=max_tokens, temperature=0.0, seed=self.seed, grammar=compiled,
             repeat_penalty=1.0,  # plans rightly repeat objects (pot, pot, pot); a penalty would push them out
-            stopping_criteria=criteria,
+            stopping_criteria=StoppingCriteriaList([stopped]),
         )
+        self._check(deadline)
         usage = result["usage"]
         return Completion(
             result["choices"][0]["text"],
             Usage(usage["prompt_tokens"], usage["completion_tokens"], time.perf_counter() - started),
         )
 
-    def _keep_only(self, llama, prefix: list[int], static: str) -> None:
+    def _check(self, deadline: float) -> None:
+        if self.cancel.is_set():
+            raise GenerationCancelled(f"Cancelled while {self.name} was writing a plan.")
+        if time.perf_counter() > deadline:
+            raise GenerationStopped(f"{self.name} took more than {self.time_limit:g} s on one reduction; stopped.",
+                                    "raise [limits] llm_seconds in the settings file, or choose a faster --model.")
+
+    def _keep_only(self, llama, prefix: list[int], static: str, deadline: float) -> None:
         """Leave exactly the static part evaluated: from memory, from disk, or evaluated now and saved."""
         self.restored = False
         count = len(prefix)
@@ -103,7 +131,10 @@ class LlamaModel:
             self.restored = True
             return
         llama.reset()
-        llama.eval(prefix)
+        # Batch by batch, as eval() would split it, so a long cold prefix can be cancelled part-way.
+        for begin in range(0, count, llama.n_batch):
+            self._check(deadline)
+            llama.eval(prefix[begin:begin + llama.n_batch])
         if path is not None:
             self._save(llama, path)
 
@@ -157,6 +188,7 @@ def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
     """A GGUF model of the manifest by name; it is read from disk at its first completion."""
     from cook2ltl import paths
     from cook2ltl.models.manifest import State, load_manifest, model_path, state_of
+    from cook2ltl.settings import load_settings
 
     manifest = load_manifest()
     choices = [entry.name for entry in manifest.values() if entry.file.endswith(".gguf")]
@@ -165,4 +197,5 @@ def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
         raise UserError(f"No language model {name!r} in the model manifest.", f"choose one of: {', '.join(choices)}.")
     if state_of(entry, verify_hash=False) != State.READY:
         raise UserError(f"The model {name!r} is not provisioned.", "run `make models` (or `cook2ltl models provision`).")
-    return LlamaModel(name, model_path(entry), state_dir=paths.model_cache_dir() / "prompt-states")
+    return LlamaModel(name, model_path(entry), state_dir=paths.model_cache_dir() / "prompt-states",
+                      time_limit=load_settings().limits.llm_seconds)
