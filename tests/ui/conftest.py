@@ -83,3 +83,31 @@ def make_app(services):
 def anyio_backend() -> str:
     """The async tests run on asyncio (anyio's pytest plugin; Textual runs on asyncio)."""
     return "asyncio"
+
+
+async def settle(pilot) -> None:
+    """Wait for every worker to end (a failed one included: the app shows its dialog), then for the
+    messages they posted to be handled."""
+    from textual.worker import WorkerFailed
+
+    try:
+        await pilot.app.workers.wait_for_complete()
+    except WorkerFailed:
+        pass
+    await pilot.pause()
+
+
+def text(widget) -> str:
+    return str(widget.render())
+
+
+def rows(screen, table: str) -> list[list[str]]:
+    from textual.widgets import DataTable
+
+    found = screen.query_one(table, DataTable)
+    return [[str(cell) for cell in found.get_row_at(i)] for i in range(found.row_count)]
+
+
+def once(messages: list) -> list:
+    """Each message once: the hook sees a message more than once on its way."""
+    return list({id(m): m for m in messages}.values())

@@ -14,7 +14,7 @@ from cook2ltl.ui.screens.library import LibraryScreen
 from cook2ltl.ui.screens.rollout import RolloutScreen
 from cook2ltl.ui.screens.translate import TranslateScreen
 
-from .conftest import SIZE
+from .conftest import SIZE, text
 
 runner = CliRunner()
 
@@ -58,7 +58,7 @@ async def test_function_keys_switch_screens_and_help_lists_the_keys(make_app):
         assert isinstance(app.screen, RolloutScreen)
         await pilot.press("f1")
         assert isinstance(app.screen, HelpScreen)
-        shown = str(app.screen.query_one("#help-keys").render())
+        shown = text(app.screen.query_one("#help-keys"))
         for key, what in (("ctrl+r", "Run"), ("ctrl+l", "Unicode/Spot"), ("a", "Approve"), ("ctrl+g", "Cancel")):
             assert key in shown and what in shown
         await pilot.press("escape")

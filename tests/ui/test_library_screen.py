@@ -12,7 +12,7 @@ from cook2ltl.ui.screens.dialogs import ConfirmDialog
 from cook2ltl.ui.screens.entry_editor import EntryEditor
 from cook2ltl.ui.widgets.entry_detail import EntryDetail
 
-from .conftest import SIZE
+from .conftest import SIZE, rows, settle, text
 
 pytestmark = pytest.mark.anyio
 FAILED = ("line 1 put(egg, pan): not holding egg",)
@@ -29,27 +29,12 @@ def library(services):
     store.close()
 
 
-def rows(screen) -> list[list[str]]:
-    table = screen.query_one("#entries", DataTable)
-    return [[str(cell) for cell in table.get_row_at(i)] for i in range(table.row_count)]
-
-
-async def settle(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
-
-
 async def choose(pilot, verb: str) -> None:
     screen = pilot.app.screen
     table = screen.query_one("#entries", DataTable)
-    table.move_cursor(row=[row[3] for row in rows(screen)].index(f"{verb}(what)"))
+    table.move_cursor(row=[row[3] for row in rows(screen, "#entries")].index(f"{verb}(what)"))
     table.focus()
     await settle(pilot)
-
-
-async def open_library(make_app):
-    app = make_app()
-    return app
 
 
 async def test_entries_search_filter_and_detail(make_app, library):
@@ -58,24 +43,24 @@ async def test_entries_search_filter_and_detail(make_app, library):
         await pilot.press("f3")
         await settle(pilot)
         screen = app.screen
-        assert [row[:4] for row in rows(screen)] == [["1", "pending", "passed", "boil(what)"],
+        assert [row[:4] for row in rows(screen, "#entries")] == [["1", "pending", "passed", "boil(what)"],
                                                      ["2", "pending", "unchecked", "whisk(what)"],
                                                      ["3", "pending", "failed", "fry(what)"]]
-        detail = str(screen.query_one(EntryDetail).render())
+        detail = text(screen.query_one(EntryDetail))
         assert "put($what, pot)" in detail and "$what = egg" in detail and "v1" in detail and "learnt" in detail
         await pilot.press("slash", *"stir")
         await settle(pilot)
-        assert [row[3] for row in rows(screen)] == ["whisk(what)"]  # found by its body
+        assert [row[3] for row in rows(screen, "#entries")] == ["whisk(what)"]  # found by its body
         screen.query_one("#search", Input).value = 'put($'  # not an FTS query: said beside the box
         await settle(pilot)
-        assert "Cannot search" in str(screen.query_one("#library-count").render())
-        assert [row[3] for row in rows(screen)] == ["whisk(what)"]
+        assert "Cannot search" in text(screen.query_one("#library-count"))
+        assert [row[3] for row in rows(screen, "#entries")] == ["whisk(what)"]
         screen.query_one("#search", Input).value = ""
         await settle(pilot)
         screen.query_one("#shown", Select).value = "failed"
         await pilot.pause()
-        assert [row[3] for row in rows(screen)] == ["fry(what)"]
-        assert "not holding egg" in str(screen.query_one(EntryDetail).render())
+        assert [row[3] for row in rows(screen, "#entries")] == ["fry(what)"]
+        assert "not holding egg" in text(screen.query_one(EntryDetail))
 
 
 async def test_approve_reject_and_a_failed_check_needs_confirming(make_app, library):
@@ -88,7 +73,7 @@ async def test_approve_reject_and_a_failed_check_needs_confirming(make_app, libr
         await settle(pilot)
         approved = library.get(1)
         assert approved.status == Status.APPROVED and approved.reviewed_by == "tester"
-        assert rows(app.screen)[0][1] == "approved" and rows(app.screen)[0][7] == "tester"
+        assert rows(app.screen, "#entries")[0][1] == "approved" and rows(app.screen, "#entries")[0][7] == "tester"
         await choose(pilot, "fry")
         await pilot.press("a")
         assert isinstance(app.screen, ConfirmDialog)
@@ -119,19 +104,19 @@ async def test_an_edit_is_checked_as_you_type_saved_as_a_version_and_undone(make
         body = editor.query_one("#body", TextArea)
         body.text = "stir($where)\nfold($what)"
         await pilot.pause()
-        problems = str(editor.query_one("#problems").render())
+        problems = text(editor.query_one("#problems"))
         assert "$where is not a parameter" in problems and "fold with 1 argument(s)" in problems
         assert editor.query_one("#save", Button).disabled
         body.text = "pick_up($what)\nstir($what)"
         await pilot.pause()
-        assert "✓" in str(editor.query_one("#problems").render())
+        assert "✓" in text(editor.query_one("#problems"))
         await pilot.press("ctrl+s")
         await settle(pilot)
         edited = library.get(2)
         assert edited.body == "pick_up($what)\nstir($what)" and edited.version == 2
         assert edited.status == Status.PENDING and edited.reviewed_by is None
         assert [(v.version, v.author) for v in library.history(2)] == [(1, "qwen"), (2, "tester")]
-        assert "v2" in str(app.screen.query_one(EntryDetail).render())
+        assert "v2" in text(app.screen.query_one(EntryDetail))
         await pilot.press("u")
         await settle(pilot)
         assert library.get(2).body == "stir($what)" and library.get(2).version == 3

@@ -7,7 +7,7 @@ import json
 import threading
 
 import pytest
-from textual.widgets import Button, DataTable, Input, TextArea
+from textual.widgets import Button, Input, TextArea
 
 from cook2ltl.errors import UserError
 from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone, WorkStopped
@@ -17,23 +17,9 @@ from cook2ltl.ui.widgets.formulas import FormulaList
 from cook2ltl.ui.widgets.status import WorkStatus
 from cook2ltl.ui.widgets.steps_view import StepsView
 
-from .conftest import SIZE
+from .conftest import SIZE, once, rows, settle, text
 
 pytestmark = pytest.mark.anyio
-
-
-def text(widget) -> str:
-    return str(widget.render())
-
-
-def once(messages: list) -> list:
-    """Each message once: the hook sees a bubbling message at every node it reaches."""
-    return list({id(m): m for m in messages}.values())
-
-
-async def finish_work(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
 
 
 async def test_a_run_shows_steps_reductions_and_formulas(make_app, services, model):
@@ -42,7 +28,7 @@ async def test_a_run_shows_steps_reductions_and_formulas(make_app, services, mod
     async with app.run_test(size=SIZE, message_hook=posted.append) as pilot:
         assert services.make_spans.calls == services.make_model.calls == 0  # nothing loaded before a run
         await pilot.press("ctrl+r")
-        await finish_work(pilot)
+        await settle(pilot)
         kinds = [type(m) for m in once(posted) if isinstance(m, (RecipeParsed, ActionReduced, StepTranslated,
                                                                  TranslationDone))]
         assert kinds == [RecipeParsed, ActionReduced, StepTranslated, ActionReduced, StepTranslated,
@@ -50,11 +36,10 @@ async def test_a_run_shows_steps_reductions_and_formulas(make_app, services, mod
         screen = app.screen
         steps = text(screen.query_one(StepsView))
         assert "boil(the egg)" in steps and "put(the egg, a bowl)" in steps and "boil(the potato)" in steps
-        table = screen.query_one("#reductions-table", DataTable)
-        rows = [[str(cell) for cell in table.get_row_at(i)] for i in range(table.row_count)]
-        assert [row[2:4] for row in rows] == [["boil(egg)", "new #1"], ["put(egg, bowl)", "primitive"],
+        reductions = rows(screen, "#reductions-table")
+        assert [row[2:4] for row in reductions] == [["boil(egg)", "new #1"], ["put(egg, bowl)", "primitive"],
                                               ["boil(potato)", "cached #1"]]
-        assert rows[2][5].startswith("pick_up(potato) · put(potato, pot)")  # the library body instantiated
+        assert reductions[2][5].startswith("pick_up(potato) · put(potato, pot)")  # the library body instantiated
         assert model.calls == 1
         assert "3 actions: 1 primitive, 1 cached, 1 by the model" in text(screen.query_one("#reduction-summary"))
         formulas = screen.query_one(FormulaList)
@@ -69,7 +54,7 @@ async def test_export_writes_json_and_text(make_app, tmp_path):
     app = make_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+r")
-        await finish_work(pilot)
+        await settle(pilot)
         for name in ("out.json", "out.txt"):
             await pilot.press("ctrl+s")
             dialog = app.screen
@@ -109,7 +94,7 @@ async def test_a_failing_run_shows_a_dialog_not_a_traceback(make_app, services):
     app = make_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+r")
-        await finish_work(pilot)
+        await settle(pilot)
         dialog = app.screen
         assert isinstance(dialog, ErrorDialog)
         assert "not provisioned" in text(dialog.query_one("#error-message"))
@@ -137,7 +122,7 @@ async def test_cancel_stops_after_the_current_action(make_app, model):
         assert app.screen.busy
         await pilot.press("ctrl+g")
         release.set()
-        await finish_work(pilot)
+        await settle(pilot)
         assert any(isinstance(m, WorkStopped) for m in posted)
         assert not any(isinstance(m, TranslationDone) for m in posted)
         assert sum(isinstance(m, ActionReduced) for m in once(posted)) == 1

@@ -68,9 +68,10 @@ class RolloutScreen(WorkScreen):
         translation = self.app.translation
         if translation is not None:
             targets.append((f"recipe: all {len(translation.steps)} steps ({translation.primitives})", "recipe"))
-            targets += [(f"recipe step {s.step.index + 1}: {s.step.sentence.text[:40]}", f"recipe:{i}")
+            targets += [(f"recipe step {s.step.index + 1}: {s.step.sentence.text}", f"recipe:{i}")
                         for i, s in enumerate(translation.steps)]
-        return [*targets, ("the formula typed below", FORMULA)]
+        targets.append(("the formula typed below", FORMULA))
+        return [(_short(label), value) for label, value in targets]
 
     def on_input_changed(self, event: Input.Changed) -> None:
         if event.value.strip():
@@ -171,3 +172,8 @@ class RolloutScreen(WorkScreen):
         self.query_one(FormulaProgress).finish(message.trial)
         outcome = "success" if message.trial.success else "failure"
         self.query_one(WorkStatus).show(f"{outcome}: {message.trial.rollout.verdict.value.replace('_', ' ')}")
+
+
+def _short(label: str, width: int = 60) -> str:
+    """One line in the target list, however long the recipe step."""
+    return label if len(label) <= width else label[: width - 1] + "…"
