@@ -1,6 +1,7 @@
 """Review of the action library: who approved what and when, approvals win, edits keep every version."""
 
 import sqlite3
+import threading
 from datetime import datetime, timezone
 
 import pytest
@@ -203,3 +204,30 @@ def dump(path) -> list[str]:
     lines = list(conn.iterdump())
     conn.close()
     return lines
+
+
+def test_two_writers_at_once_wait_for_each_other_and_lose_nothing(library, tmp_path):
+    """Another process (here a second connection in a thread) edits and replaces while this one does."""
+    entry = add(library)
+    other = Library(tmp_path / "library.sqlite")
+    failures = []
+
+    def work(store, name):
+        try:
+            for n in range(15):
+                store.edit(entry.id, f"stir($what)\n# {name} {n}", name)
+                current = store.lookup("recipe", f"{name}_verb", ("what",))
+                store.add("recipe", f"{name}_verb", ("what",), f"shake($what)\n# {n}", "qwen", "h",
+                          replacing=current.id if current else None)
+        except Exception as error:  # noqa: BLE001 - the test reports any failure of a writer
+            failures.append(error)
+
+    workers = [threading.Thread(target=work, args=(store, name)) for store, name in ((library, "ann"), (other, "bob"))]
+    for worker in workers:
+        worker.start()
+    for worker in workers:
+        worker.join()
+    other.close()
+    assert failures == []
+    assert [v.version for v in library.history(entry.id)] == list(range(1, 32))
+    assert len(library.live("recipe")) == 3 and len(library.entries()) == 31

@@ -121,7 +121,7 @@ class Library:
     @contextmanager
     def transaction(self) -> Iterator[Library]:
         """Several writes as one: all of them, or (on an exception) none. Writes inside nest as savepoints."""
-        with self._db().atomic():
+        with self._writing():
             yield self
 
     def add(self, primitives: str, verb: str, signature: tuple[str, ...], body: str, model: str, prompt_hash: str,
@@ -139,7 +139,7 @@ class Library:
             "example": json.dumps(dict(example or {})), "version": 1, "reviewed_by": None, "reviewed_at": None,
         }
         try:
-            with db.atomic():
+            with self._writing():
                 old = self._row(replacing, missing_ok=True) if replacing is not None else None
                 if old is not None and old["status"] == Status.APPROVED:
                     return _entry(old)
@@ -159,7 +159,7 @@ class Library:
         """Approve, reject (or return to pending) an entry, recording who and when. An entry whose body failed
         the kitchen check is approved only with `force`."""
         status = Status(status)
-        with self._db().atomic():
+        with self._writing():
             row = self._row(entry_id)
             if status == Status.APPROVED and row["validation"] == "failed" and not force:
                 raise UserError(f"Entry {entry_id} ({_entry(row).action}) failed the kitchen check: "
@@ -172,13 +172,13 @@ class Library:
              note: str = "") -> LibraryEntry:
         """A new body as a new version (the caller checks and validates it first); the entry returns to pending,
         unreviewed, for someone to approve."""
-        with self._db().atomic():
+        with self._writing():
             self._new_version(self._row(entry_id), body, by, validation, tuple(problems), note)
         return self.get(entry_id)
 
     def undo(self, entry_id: int, by: str) -> LibraryEntry:
         """Bring back the body before the current one, as a new version (pending again); history is never lost."""
-        with self._db().atomic():
+        with self._writing():
             row = self._row(entry_id)
             target = versions.undo_target(versions.history(self._db(), entry_id))
             if target is None:
@@ -191,7 +191,7 @@ class Library:
     def insert(self, entry: LibraryEntry, history: Sequence[Version]) -> LibraryEntry:
         """Store an entry as it is, status, review and every version included (an import); its id is new."""
         db = self._db()
-        with db.atomic():
+        with self._writing():
             row = {
                 "primitives": entry.primitives, "verb": entry.verb, "signature": ",".join(entry.signature),
                 "body": entry.body, "status": Status(entry.status).value, "model": entry.model,
@@ -216,6 +216,24 @@ class Library:
                 db.close()
             self._opened.clear()
         self._local = threading.local()
+
+    @contextmanager
+    def _writing(self) -> Iterator[Database]:
+        """One write transaction. BEGIN IMMEDIATE takes the write lock before the first read, so a second writer
+        waits (busy_timeout) instead of failing on a snapshot the first one changed; nested, a savepoint."""
+        db = self._db()
+        if db.conn.in_transaction:
+            with db.atomic():
+                yield db
+            return
+        db.conn.execute("BEGIN IMMEDIATE")
+        try:
+            yield db
+            db.conn.execute("COMMIT")
+        except BaseException:
+            if db.conn.in_transaction:
+                db.conn.execute("ROLLBACK")
+            raise
 
     # --- inside a transaction ------------------------------------------------------------------------------
 
