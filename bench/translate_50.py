@@ -1,28 +1,39 @@
-"""The paper's ablation (Table I) on its 50 evaluation recipes: LLM calls, tokens and time per variant.
+"""The paper's ablation (Table I) on its 50 evaluation recipes, and the kitchen check of their new reductions.
 
     .venv/bin/python bench/translate_50.py [--model qwen2.5-coder-1.5b] [--variants AR* AR AR+A] [--limit 50]
+    .venv/bin/python bench/translate_50.py --validate --repairs 0 2 [--out bench/results]
 
-The recipes are parsed once with the real parser; AR+A starts from an empty library and grows it over
-the 50 recipes in order, as in the paper. Which actions reach the model depends only on the parse and the
-variant, so the call counts of AR* and AR hold for any model.
+The recipes (tests/data/eval_recipes_50.csv, column "Edited text") are parsed once with the real parser;
+AR+A starts from an empty library and grows it over the 50 recipes in order, as in the paper. Which actions
+reach the model depends only on the parse and the variant, so the call counts of AR* and AR hold for any model.
+
+With --validate, AR+A runs once per --repairs value with the kitchen validator: the share of new reductions
+whose plan runs in the THOR kitchen (validated rate), beside the paper's executability. Each recipe's
+results are appended to <out>/validation-<model>-repairs<N>.jsonl as soon as it is done, so a run cut
+short still leaves its figures; the summary goes to validation-<model>.json and .md.
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
+import json
 import tempfile
 import time
 from pathlib import Path
 
-from cook2ltl import offline, paths
+from cook2ltl import offline
 from cook2ltl.library import Library
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Finished, Translator, Variant, translate
+from cook2ltl.pipeline import Finished, Translation, Translator, Variant, rates, translate
 from cook2ltl.reduce.llm import DEFAULT_MODEL, load_model
+from cook2ltl.reduce.model import Source
 from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.reduce.validation import KitchenValidator
 from cook2ltl.settings import load_settings
 from cook2ltl.stack import dependency_parser, span_extractor
+
+RECIPES = Path(__file__).resolve().parents[1] / "tests" / "data" / "eval_recipes_50.csv"
 
 
 def main() -> None:
@@ -30,33 +41,122 @@ def main() -> None:
     parser.add_argument("--model", default=DEFAULT_MODEL)
     parser.add_argument("--variants", nargs="+", default=["AR*", "AR", "AR+A"])
     parser.add_argument("--limit", type=int, default=50)
+    parser.add_argument("--validate", action="store_true", help="AR+A with the kitchen check, once per --repairs")
+    parser.add_argument("--repairs", nargs="+", type=int, default=[0, 2])
+    parser.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
     args = parser.parse_args()
     offline.enforce()
-    source = paths.shared_data_dir() / "cook2ltl" / "eval_recipes_50.csv"
-    with source.open(encoding="utf-8") as handle:
+    with RECIPES.open(encoding="utf-8") as handle:
         texts = [row["Edited text"] for row in csv.DictReader(handle)][: args.limit]
     spans, dependencies = span_extractor(load_settings()), dependency_parser()
     started = time.perf_counter()
     parsed = [parse_recipe(text, spans, dependencies) for text in texts]
-    print(f"{len(parsed)} recipes parsed in {time.perf_counter() - started:.0f} s")
+    print(f"{len(parsed)} recipes parsed in {time.perf_counter() - started:.0f} s", flush=True)
     model, primitives = load_model(args.model), load_primitives("recipe")
+    if args.validate:
+        validation_runs(parsed, model, primitives, args.repairs, args.out)
+    else:
+        ablation(parsed, model, primitives, args.variants)
+
+
+def ablation(parsed, model, primitives, variants: list[str]) -> None:
     print("| variant | actions | primitive | library hits | LLM calls | prompt tokens | completion tokens | LLM s | s |")
     print("|---|---|---|---|---|---|---|---|---|")
-    for name in args.variants:
+    for name in variants:
         variant = Variant(name)
         with tempfile.TemporaryDirectory() as folder:
             library = Library(Path(folder) / "library.sqlite") if variant == Variant.AR_LIBRARY else None
-            translator = Translator(primitives, model, library, variant)
-            totals: dict[str, float] = {}
-            for recipe in parsed:
-                stats = next(e for e in translate(recipe, translator) if isinstance(e, Finished)).translation.stats
-                for key, value in vars(stats).items():
-                    totals[key] = totals.get(key, 0) + value
+            translations = [_translation(recipe, Translator(primitives, model, library, variant)) for recipe in parsed]
             if library is not None:
                 library.close()
+        totals = _totals(translations)
         print(f"| {name} | {totals['actions']:.0f} | {totals['primitive']:.0f} | {totals['library_hits']:.0f} "
               f"| {totals['llm_calls']:.0f} | {totals['prompt_tokens']:.0f} | {totals['completion_tokens']:.0f} "
               f"| {totals['llm_seconds']:.0f} | {totals['seconds']:.0f} |", flush=True)
+
+
+def validation_runs(parsed, model, primitives, repairs: list[int], out: Path) -> None:
+    out.mkdir(parents=True, exist_ok=True)
+    summaries = []
+    for count in repairs:
+        log = out / f"validation-{model.name}-repairs{count}.jsonl"
+        log.unlink(missing_ok=True)
+        translations = []
+        with tempfile.TemporaryDirectory() as folder, KitchenValidator(primitives) as validator:
+            library = Library(Path(folder) / "library.sqlite")
+            translator = Translator(primitives, model, library, validator=validator, repairs=count)
+            for index, recipe in enumerate(parsed):
+                translations.append(_translation(recipe, translator))
+                with log.open("a", encoding="utf-8") as handle:
+                    handle.write(json.dumps(_recipe_record(index, translations[-1]), ensure_ascii=False) + "\n")
+                print(f"repairs {count}: recipe {index + 1}/{len(parsed)} {_line(summary(translations, count))}",
+                      flush=True)
+            library.close()
+        summaries.append(summary(translations, count))
+        (out / f"validation-{model.name}.json").write_text(json.dumps(
+            {"model": model.name, "primitives": primitives.name, "recipes": len(parsed), "runs": summaries},
+            indent=2))
+        (out / f"validation-{model.name}.md").write_text(_table(summaries))
+        print(_table(summaries), flush=True)
+
+
+def summary(translations: list[Translation], repairs: int) -> dict:
+    counts, totals = rates(*translations), _totals(translations)
+    new = [r for t in translations for s in t.steps for r in s.actions if r.reduction.source == Source.LLM]
+    first_try = sum(1 for r in new if not r.attempts and r.validation is not None and r.validation.passed)
+    unchecked = sum(1 for r in new if r.validation is not None and not r.validation.checked)
+    return {
+        "repairs": repairs, "recipes": len(translations), "actions": totals["actions"],
+        "library_hits": totals["library_hits"], "new_reductions": counts.new_reductions,
+        "no_plan": sum(1 for r in new if r.validation is None), "checked": totals["checked"],
+        "unchecked": unchecked, "validated": counts.validated, "validated_rate": counts.validated_rate,
+        "passed_first_try": first_try, "repaired": totals["repaired"], "repair_calls": totals["repair_calls"],
+        "executability": counts.executability, "llm_seconds": round(totals["llm_seconds"], 1),
+        "seconds": round(totals["seconds"], 1),
+    }
+
+
+def _translation(recipe, translator: Translator) -> Translation:
+    return next(e for e in translate(recipe, translator) if isinstance(e, Finished)).translation
+
+
+def _totals(translations: list[Translation]) -> dict[str, float]:
+    totals: dict[str, float] = {}
+    for translation in translations:
+        for key, value in vars(translation.stats).items():
+            totals[key] = totals.get(key, 0) + value
+    return totals
+
+
+def _recipe_record(index: int, translation: Translation) -> dict:
+    reductions = [{
+        "action": r.reduction.action.text(),
+        "body": [c.text() for c in r.reduction.body],
+        "validation": r.validation.status if r.validation else None,
+        "problems": list(r.validation.messages()) if r.validation else [],
+        "scene": r.validation.scene if r.validation else None,
+        "failed_attempts": [[c.text() for c in a.body] for a in r.attempts],
+    } for s in translation.steps for r in s.actions if r.reduction.source == Source.LLM]
+    return {"recipe": index, "stats": vars(translation.stats), "reductions": reductions}
+
+
+def _line(s: dict) -> str:
+    rate = f"{s['validated_rate']:.0%}" if s["validated_rate"] is not None else "-"
+    return (f"new {s['new_reductions']}, validated {s['validated']} ({rate}), first try {s['passed_first_try']}, "
+            f"repaired {s['repaired']}, unchecked {s['unchecked']}, {s['seconds']:.0f} s")
+
+
+def _table(summaries: list[dict]) -> str:
+    rows = ["| repairs | recipes | new reductions | checked | unchecked | no plan | passed first try | repaired "
+            "| validated | validated rate | executability | repair calls | LLM s | s |", "|" + "---|" * 14]
+    for s in summaries:
+        rate = f"{s['validated_rate']:.1%}" if s["validated_rate"] is not None else "-"
+        executability = f"{s['executability']:.1%}" if s["executability"] is not None else "-"
+        rows.append(f"| {s['repairs']} | {s['recipes']} | {s['new_reductions']} | {s['checked']:.0f} "
+                    f"| {s['unchecked']} | {s['no_plan']} | {s['passed_first_try']} | {s['repaired']:.0f} "
+                    f"| {s['validated']} | {rate} | {executability} | {s['repair_calls']:.0f} "
+                    f"| {s['llm_seconds']:.0f} | {s['seconds']:.0f} |")
+    return "\n".join(rows) + "\n"
 
 
 if __name__ == "__main__":

@@ -5,6 +5,12 @@ can forward them; a `threading.Event` stops it between two actions.
 
 Variants of the paper's ablation: AR* reduces every action with the model; AR passes the primitives
 through; AR+𝔸 (the default) also looks the action library up first and caches every new reduction.
+
+With a `validator`, every new reduction is first run in the kitchen; a failing one is written again with
+the failure as feedback, at most `repairs` times, and cached with its validation (passed, failed or
+unchecked) as a pending entry: only a reviewer approves. Library hits are not validated again: the entry
+was checked when it was learnt and carries that result, and reuse must stay a lookup (the paper's point);
+a lab that wants only reviewed plans sets `approved_only`.
 """
 
 from __future__ import annotations
@@ -25,7 +31,9 @@ from cook2ltl.reduce.action import actions_of
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
-from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, reduce_action
+from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand
+from cook2ltl.reduce.repair import Checked, reduce_checked
+from cook2ltl.reduce.validation import PlanValidator, Validation
 from cook2ltl.translate.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
@@ -44,6 +52,9 @@ class Translator:
     library: Library | None = None  # needed by AR+𝔸 only
     variant: Variant = Variant.AR_LIBRARY
     settings: ReductionSettings = ReductionSettings()
+    validator: PlanValidator | None = None  # checks new reductions in the kitchen before they are cached
+    repairs: int = 2  # how many times a plan that fails the check is written again
+    approved_only: bool = False  # lab mode: reuse approved library entries only
 
 
 @dataclass(frozen=True)
@@ -51,6 +62,8 @@ class ActionResult:
     frame_index: int
     reduction: Reduction  # the body as found or written, library verbs included
     plan: tuple[Call, ...]  # the same down to primitives; empty when there is no admissible plan
+    validation: Validation | None = None  # the kitchen check of a new reduction
+    attempts: tuple[Reduction, ...] = ()  # the model's other reductions of this action (failed, then repaired)
 
 
 @dataclass(frozen=True)
@@ -72,6 +85,10 @@ class Stats:
     llm_seconds: float = 0.0
     dropped_lines: int = 0
     new_entries: int = 0
+    validated: int = 0  # new reductions that passed the kitchen check
+    checked: int = 0  # new reductions the kitchen could check (passed or failed)
+    repaired: int = 0  # of the validated, those that passed only after a repair
+    repair_calls: int = 0  # model calls for repairs (not in llm_calls; their tokens and time are)
     seconds: float = 0.0
 
 
@@ -83,6 +100,35 @@ class Translation:
     steps: tuple[StepResult, ...]
     formula: Formula  # every step in sequence
     stats: Stats
+    validating: bool = False  # whether new reductions were checked in the kitchen
+
+
+@dataclass(frozen=True)
+class Rates:
+    """Counts behind the two quality rates of one or more translations."""
+
+    written_lines: int  # plan lines the model wrote, repairs included
+    admissible_lines: int  # of those, the ones kept: calls of the primitive set or the library
+    new_reductions: int  # actions the model reduced
+    validated: int | None  # of those, the ones whose plan passed the kitchen check (None: nothing validated)
+
+    @property
+    def executability(self) -> float | None:
+        """The paper's executability: the share of the model's plan lines that are admissible."""
+        return self.admissible_lines / self.written_lines if self.written_lines else None
+
+    @property
+    def validated_rate(self) -> float | None:
+        """The stronger rate: the share of new reductions whose plan runs in the kitchen."""
+        return self.validated / self.new_reductions if self.new_reductions and self.validated is not None else None
+
+
+def rates(*translations: Translation) -> Rates:
+    results = [r for t in translations for step in t.steps for r in step.actions if r.reduction.source == Source.LLM]
+    outputs = [reduction for r in results for reduction in (*r.attempts, r.reduction)]
+    passed = sum(1 for r in results if r.validation is not None and r.validation.passed)
+    return Rates(sum(len(o.body) + len(o.dropped) for o in outputs), sum(len(o.body) for o in outputs),
+                 len(results), passed if any(t.validating for t in translations) else None)
 
 
 @dataclass(frozen=True)
@@ -152,7 +198,7 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
         yield StepDone(steps[-1])
     stats = replace(state.stats, seconds=time.perf_counter() - started)
     yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
-                               tuple(steps), sequenced_visit(*elements), stats))
+                               tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None))
 
 
 class _Run:
@@ -179,7 +225,7 @@ class _Run:
                 return result, direct_element(action, calls, primitives)
         stale = None
         if self.uses_library:
-            entry = self.t.library.lookup(primitives.name, action.verb, action.signature)
+            entry = self.t.library.lookup(primitives.name, action.verb, action.signature, self.t.approved_only)
             body = instantiate(entry.body, placeholders(action)) if entry else None
             plan = self._expand(body) if body is not None else None
             if plan:
@@ -187,19 +233,37 @@ class _Run:
                 reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
                 return ActionResult(frame_index, reduction, plan), plan_element(plan, primitives)
             stale = entry.id if entry else None  # written for another version of the primitive set
-        reduction = reduce_action(action, primitives, self.verbs, self.t.model, self.t.settings)
-        usage = reduction.usage
-        self._count(llm_calls=1, prompt_tokens=usage.prompt_tokens, completion_tokens=usage.completion_tokens,
-                    llm_seconds=usage.seconds, dropped_lines=len(reduction.dropped))
-        plan = self._expand(reduction.body) or ()
-        if plan and self.uses_library:
+        checked = reduce_checked(action, primitives, self.verbs, self.t.model, self.t.settings, self._expand,
+                                 self.t.validator, self.t.repairs)
+        self._count_reductions(checked)
+        reduction, plan, validation = checked.reduction, checked.plan, checked.validation
+        if plan and self.uses_library and not self._awaiting_review(action):
             entry = self.t.library.add(primitives.name, action.verb, action.signature,
                                        parametrize(reduction.body, action), self.t.model.name,
-                                       reduction.prompt_hash, replacing=stale)
+                                       reduction.prompt_hash, replacing=stale,
+                                       validation=validation.status if validation else "unchecked",
+                                       problems=validation.messages() if validation else (),
+                                       example=placeholders(action))
             reduction = replace(reduction, entry_id=entry.id)
             self._count(new_entries=1)
             self._refresh()
-        return ActionResult(frame_index, reduction, plan), plan_element(plan, primitives) if plan else None
+        result = ActionResult(frame_index, reduction, plan, validation, checked.failed)
+        return result, plan_element(plan, primitives) if plan else None
+
+    def _count_reductions(self, checked: Checked) -> None:
+        for reduction in checked.model_calls:
+            usage = reduction.usage
+            self._count(prompt_tokens=usage.prompt_tokens, completion_tokens=usage.completion_tokens,
+                        llm_seconds=usage.seconds, dropped_lines=len(reduction.dropped))
+        self._count(llm_calls=1, repair_calls=len(checked.failed))
+        if checked.validation is not None and checked.validation.checked:
+            passed = checked.validation.passed
+            self._count(checked=1, validated=int(passed), repaired=int(checked.repaired))
+
+    def _awaiting_review(self, action: Action) -> bool:
+        """In lab mode, an action whose pending entry was skipped: the new plan is used, not cached over it."""
+        return self.t.approved_only and self.t.library.lookup(
+            self.t.primitives.name, action.verb, action.signature) is not None
 
     def problems(self, results: list[ActionResult], formula: Formula) -> tuple[str, ...]:
         found = [f"no admissible plan for {r.reduction.action.text()}" for r in results if not r.plan]
@@ -224,7 +288,7 @@ class _Run:
 
     def _refresh(self) -> None:
         if self.uses_library:
-            entries = self.t.library.live(self.t.primitives.name)
+            entries = self.t.library.live(self.t.primitives.name, self.t.approved_only)
             self.verbs = [LibraryVerb(e.verb, e.signature, e.body) for e in entries]
 
     def _count(self, **increments) -> None:

@@ -10,19 +10,24 @@ from cook2ltl.reduce.model import Usage
 
 @dataclass
 class ScriptedModel:
-    """`answers` maps a verb to the body it writes; every prompt and grammar it was given is kept."""
+    """`answers` maps a verb to the body it writes, or to the bodies it writes one after the other (the last
+    one again once they run out); every prompt, static part and grammar it was given is kept."""
 
-    answers: dict[str, str]
+    answers: dict[str, str | list[str]]
     name: str = "scripted"
     prompts: list[str] = field(default_factory=list)
+    statics: list[str] = field(default_factory=list)
     grammars: list[str] = field(default_factory=list)
 
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int, stop=None) -> Completion:
         prompt = static + dynamic
-        self.prompts.append(prompt)
-        self.grammars.append(grammar)
         verb = prompt.rstrip().splitlines()[-1].removeprefix("def ").split("(")[0]
-        body = self.answers.get(verb, "")
+        asked = sum(1 for earlier in self.prompts if earlier.rstrip().splitlines()[-1].startswith(f"def {verb}("))
+        self.prompts.append(prompt)
+        self.statics.append(static)
+        self.grammars.append(grammar)
+        answer = self.answers.get(verb, "")
+        body = answer if isinstance(answer, str) else answer[min(asked, len(answer) - 1)]
         text = "".join(f"    {line.strip()}\n" for line in body.strip().splitlines()) + "\n"
         return Completion(text, Usage(prompt_tokens=len(prompt.split()), completion_tokens=len(text.split()), seconds=0.01))
 

@@ -12,7 +12,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from rich.text import Text
 
 from cook2ltl.cli.inputs import read_recipe
-from cook2ltl.pipeline import ActionDone, Finished, Started, Translation, Variant
+from cook2ltl.pipeline import ActionDone, Finished, Started, Translation, Variant, rates
 from cook2ltl.reduce.llm import DEFAULT_MODEL
 from cook2ltl.reduce.model import Source
 
@@ -31,6 +31,13 @@ def translate_command(
     max_lines: int = typer.Option(12, "--max-lines", min=1, max=40, help="Most lines one reduction may have."),
     comments: bool = typer.Option(False, "--comments/--no-comments",
                                   help="Let the model comment each line, as the paper's prompt does (about 2x slower)."),
+    validate: Optional[bool] = typer.Option(None, "--validate/--no-validate",
+                                            help="Run each new reduction in the THOR kitchen before caching it "
+                                                 "(default: on for AR+A)."),
+    repairs: int = typer.Option(2, "--repairs", min=0, max=10,
+                                help="How many times a plan that fails in the kitchen goes back to the model."),
+    approved_only: bool = typer.Option(False, "--approved-only",
+                                       help="Reuse only approved library entries (new ones are still cached, pending)."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
@@ -47,19 +54,54 @@ def translate_command(
     text = read_recipe(recipe)
     chosen = load_primitives(primitives)
     language_model = load_model(model)
-    store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
-    translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments))
     errors = Console(stderr=True)
+    validator = _validator(chosen, validate, variant, errors)
+    store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
+    translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments),
+                            validator, repairs, approved_only)
     try:
         events = run(text, span_extractor(load_settings()), dependency_parser(), translator)
         translation = _follow(events, errors)
     finally:
         if store is not None:
             store.close()
+        if validator is not None:
+            validator.close()
     if as_json:
-        typer.echo(json.dumps(translation_json(translation), ensure_ascii=False, indent=2))
+        typer.echo(json.dumps(with_validation(translation_json(translation), translation), ensure_ascii=False,
+                              indent=2))
     else:
         show(translation, Console())
+
+
+def _validator(primitives, validate: bool | None, variant: Variant, errors: Console):
+    """The kitchen validator, or None: not asked for, or by default with a primitive set it cannot run (asked
+    for explicitly, that is an error)."""
+    from cook2ltl.reduce.validation import KitchenValidator, unsupported
+
+    if validate is False or (validate is None and variant != Variant.AR_LIBRARY):
+        return None
+    missing = unsupported(primitives)
+    if missing and validate is None:
+        errors.print(f"[yellow]not validating: the kitchen has no action for {', '.join(missing)}[/yellow]")
+        return None
+    return KitchenValidator(primitives)
+
+
+def with_validation(data: dict, translation: Translation) -> dict:
+    """The translation's JSON with each new reduction's kitchen check and the two rates in the stats."""
+    results = [result for step in translation.steps for result in step.actions]
+    actions = [action for step in data["steps"] for action in step["actions"]]
+    for action, result in zip(actions, results):
+        check = result.validation
+        action["validation"] = None if check is None else {
+            "status": check.status, "problems": list(check.messages()), "scene": check.scene,
+            "seconds": round(check.seconds, 4)}
+        action["repairs"] = [[call.text() for call in attempt.body] for attempt in result.attempts]
+    counts = rates(translation)
+    data["stats"] |= {"executability": counts.executability, "validated_rate": counts.validated_rate,
+                      "written_lines": counts.written_lines, "admissible_lines": counts.admissible_lines}
+    return data
 
 
 def _follow(events, console: Console) -> Translation:
@@ -88,7 +130,7 @@ def show(translation: Translation, console: Console) -> None:
         for index, frame in enumerate(step.step.frames):
             console.print(Text("      " + frame.signature(), style="dim"))
             for result in (r for r in step.actions if r.frame_index == index):
-                _show_reduction(result.reduction, console)
+                _show_reduction(result, console)
         console.print(Text("      φ = ", style="dim") + Text(to_unicode(step.formula), style="yellow"), soft_wrap=True)
         console.print(Text("          " + to_spot(step.formula), style="dim"), soft_wrap=True)
         for problem in step.problems:
@@ -99,9 +141,22 @@ def show(translation: Translation, console: Console) -> None:
         f"{stats.llm_calls} LLM calls ({stats.prompt_tokens} prompt + {stats.completion_tokens} completion tokens, "
         f"{stats.llm_seconds:.1f} s); {stats.new_entries} new library entries; {stats.seconds:.1f} s in all[/dim]"
     )
+    console.print(f"[dim]{rates_line(translation)}[/dim]", highlight=False)
 
 
-def _show_reduction(reduction, console: Console) -> None:
+def rates_line(translation: Translation) -> str:
+    counts, stats = rates(translation), translation.stats
+    line = "executability " + (f"{counts.executability:.0%} ({counts.admissible_lines} of {counts.written_lines} "
+                               f"lines the model wrote are admissible)" if counts.executability is not None else "-")
+    if counts.validated_rate is None:
+        return line + "; validated -" + ("" if translation.validating else " (not validating)")
+    return (line + f"; validated {counts.validated_rate:.0%} ({stats.validated} of {counts.new_reductions} new "
+            f"reductions run in the kitchen, {stats.repaired} after repair; {stats.repair_calls} repair calls; "
+            f"{stats.checked} checked)")
+
+
+def _show_reduction(result, console: Console) -> None:
+    reduction = result.reduction
     line = Text("        → ")
     line.append(reduction.action.text(), style="bold")
     entry = f" #{reduction.entry_id}" if reduction.entry_id is not None else ""
@@ -112,3 +167,11 @@ def _show_reduction(reduction, console: Console) -> None:
             console.print(f"            {call.text()}", highlight=False)
     for dropped in reduction.dropped:
         console.print(f"            [red]✗ {dropped}[/red] [dim](not admissible, dropped)[/dim]", highlight=False)
+    check = result.validation
+    if check is not None:
+        repaired = f", after {len(result.attempts)} repair{'s' if len(result.attempts) > 1 else ''}" if result.attempts else ""
+        style = "green" if check.passed else "yellow" if not check.checked else "red"
+        console.print(f"            [{style}]kitchen check: {check.status}[/{style}] [dim]({check.scene or 'no scene'}"
+                      f"{repaired})[/dim]", highlight=False)
+        for message in check.messages():
+            console.print(f"            [{style}]! {message}[/{style}]", highlight=False)

@@ -19,7 +19,7 @@ from typing import Iterable
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.grammar import INDENT
-from cook2ltl.reduce.model import CONDITION, Action, PrimitiveSet
+from cook2ltl.reduce.model import CONDITION, Action, Call, PrimitiveSet
 
 
 @dataclass(frozen=True)
@@ -36,7 +36,16 @@ class Prompt:
         return hashlib.sha256(self.text.encode()).hexdigest()
 
 
-def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action: Action, comments: bool) -> Prompt:
+@dataclass(frozen=True)
+class Feedback:
+    """A plan that failed in the kitchen, and why: shown to the model before it writes the body again."""
+
+    body: tuple[Call, ...]
+    problems: tuple[str, ...]
+
+
+def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action: Action, comments: bool,
+                 feedback: Feedback | None = None) -> Prompt:
     names = {p.name for p in primitives.primitives}
     imported = [verb for verb in dict.fromkeys(library_verbs) if verb not in names and verb != action.verb]
     extra = [name for name in action.objects if name not in primitives.objects]
@@ -46,7 +55,21 @@ def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action:
     if extra:
         lines.append(f"objects += [{', '.join(extra)}]")
     dynamic = "\n".join(lines) + "\n\n" if lines else ""
+    if feedback is not None:
+        dynamic += failed_attempt(action, feedback)
     return Prompt(static_prefix(primitives, comments), dynamic + header(action))
+
+
+def failed_attempt(action: Action, feedback: Feedback) -> str:
+    """The failed body under the action's header, its problems as comments after it, then a blank line:
+
+        def boil(egg: what):
+            put(egg, pot)
+            # this plan failed: line 1 put(egg, pot): the agent holds nothing; …
+    """
+    lines = [INDENT + call.text() for call in feedback.body]
+    lines += [f"{INDENT}# this plan failed: {problem}" for problem in feedback.problems]
+    return header(action) + "\n".join(lines) + "\n\n"
 
 
 def static_prefix(primitives: PrimitiveSet, comments: bool) -> str:

@@ -9,7 +9,7 @@ from cook2ltl.reduce.body import bind, instantiate, loops, read_body, without_lo
 from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
-from cook2ltl.reduce.prompt import build_prompt
+from cook2ltl.reduce.prompt import Feedback, build_prompt
 
 TOKENS_PER_LINE = 40  # a call with its comment; the grammar ends the body long before this budget
 MAX_DEPTH = 8  # library verbs calling library verbs; deeper means a cycle
@@ -32,10 +32,11 @@ class LibraryVerb:
 
 
 def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[LibraryVerb], model: LanguageModel,
-                  settings: ReductionSettings) -> Reduction:
-    """Ask the model for the body of `action`; lines the grammar would not allow are dropped and kept aside."""
+                  settings: ReductionSettings, feedback: Feedback | None = None) -> Reduction:
+    """Ask the model for the body of `action`; lines the grammar would not allow are dropped and kept aside.
+    With `feedback`, the prompt shows a plan that failed and why, before the header the model completes."""
     vocab = vocabulary(primitives, ((v.verb, v.signature) for v in library), action)
-    prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments)
+    prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments, feedback)
     grammar = to_gbnf(vocab, settings.max_lines, settings.comments)
     completion = model.complete(prompt.static, prompt.dynamic, grammar, settings.max_lines * TOKENS_PER_LINE, loops)
     calls, unread = read_body(completion.text)

@@ -1,0 +1,139 @@
+"""The kitchen a plan is checked in: the THOR kitchen that has most of its objects, and stand-ins for the rest.
+
+A recipe names things no THOR kitchen has (penne, a saucepan, an oven). Rather than fail every such plan
+with "object not found", which no repair could fix, each name is bound before the run to an object of a
+fitting THOR type, so THOR's own rules judge the plan's order of actions:
+
+* a name THOR knows (`pot`, `fridge`, `stove_burner`, `sink`) stands for itself;
+* a kitchen word of `STAND_INS` stands for the first of its types the kitchen has
+  (`saucepan` → a Pot, `oven` → a Microwave: closed, switched, heats what is put in it);
+* THOR's liquids (water, coffee, wine) are not objects: putting or pouring one fills the container;
+* a word of `NO_COUNTERPART` (a blender, a grater) has nothing that could stand for it: the plan is
+  not checked, and says why;
+* any other name is an ingredient and stands for a food object the plan does not name itself
+  (a Potato, an Apple …): it must be picked up before it is put somewhere, cut with a knife in hand.
+
+The kitchen chosen is the one of the 30 where the most names find an object (ties: the lowest number).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from functools import cache
+
+from cook2ltl.reduce.model import TIMER, Call
+
+# Kitchen words of recipes and the THOR types that can stand for them, best first.
+STAND_INS: Mapping[str, tuple[str, ...]] = {
+    "saucepan": ("Pot", "Pan"), "stock_pot": ("Pot",), "skillet": ("Pan", "Pot"), "frying_pan": ("Pan",),
+    "wok": ("Pan", "Pot"), "griddle": ("Pan",),
+    "baking_pan": ("Plate",), "baking_dish": ("Plate",), "baking_sheet": ("Plate",), "casserole": ("Plate",),
+    "dish": ("Plate",), "tray": ("Plate",), "platter": ("Plate",), "cutting_board": ("Plate",),
+    "mixing_bowl": ("Bowl",), "colander": ("Bowl",), "sieve": ("Bowl",), "strainer": ("Bowl",),
+    "measuring_cup": ("Cup", "Mug"), "glass": ("Cup",),
+    "oven": ("Microwave",), "freezer": ("Fridge",),
+    "whisk": ("Spatula", "Spoon", "Fork"), "wooden_spoon": ("Spoon", "Spatula"), "tongs": ("Spatula", "Fork"),
+}  # fmt: skip
+# Kitchen words no THOR type can stand for: a plan that uses one is not checked.
+NO_COUNTERPART = frozenset(
+    "blender mixer food_processor grater peeler rolling_pin grill lid foil plastic_wrap".split()
+)
+# Food types that stand for a recipe's ingredients, the most widely placeable first.
+FOODS = ("Potato", "Apple", "Tomato", "Egg", "Lettuce", "Bread")
+
+
+@dataclass(frozen=True)
+class Frame:
+    """Where a plan runs: the scene, the objectIds bound to names beforehand, or why it cannot run."""
+
+    scene: str
+    bound: Mapping[str, str]
+    missing: tuple[str, ...] = ()  # names nothing can stand for
+    hidden: int = 0  # stand-ins that start shut away in a cabinet or fridge: a worse kitchen for the plan
+
+
+def plan_names(plan: Iterable[Call]) -> tuple[str, ...]:
+    """The object names a plan uses, in order (a wait's subject, but not its state or a timer)."""
+    names: dict[str, None] = {}
+    for call in plan:
+        args = call.args[:1] if call.is_wait else call.args
+        names.update((a, None) for a in args if a != TIMER)
+    return tuple(names)
+
+
+def build_frame(plan: tuple[Call, ...], liquids: frozenset[str]) -> Frame:
+    """The best kitchen for the plan and the stand-ins bound in it."""
+    from cook2ltl.kitchen.scenes import scene_names
+
+    names = [n for n in plan_names(plan) if n not in liquids]
+    missing = tuple(n for n in names if n in NO_COUNTERPART)
+    if missing:
+        return Frame("", {}, missing)
+    frames = [_frame_in(scene, names) for scene in scene_names()]
+    return min(frames, key=lambda f: (len(f.missing), f.hidden, _number(f.scene)))
+
+
+def _frame_in(scene: str, names: list[str]) -> Frame:
+    from cook2ltl.kitchen.names import types_for
+
+    objects = _objects(scene)
+    available = {object_type for object_type, _ in objects}
+    direct = [n for n in names if types_for(n, available)]  # resolved while the plan runs
+    named_types = {t for n in direct for t in types_for(n, available)}
+    taken: set[str] = set()
+    bound: dict[str, str] = {}
+    missing: list[str] = []
+    for name in names:
+        if name in direct:
+            continue
+        if types_for(name, _all_types()):
+            wanted: tuple[str, ...] = ()  # a THOR object other kitchens have: missing here
+        else:
+            wanted = STAND_INS.get(name) or tuple(t for t in FOODS if t not in named_types)
+        chosen = _first_free(objects, wanted, taken)
+        if chosen is None:
+            missing.append(name)
+        else:
+            taken.add(chosen)
+            bound[name] = chosen
+    hidden = sum(1 for object_id in bound.values() if object_id in _shut_away(scene))
+    return Frame(scene, bound, tuple(missing), hidden)
+
+
+def _first_free(objects: tuple[tuple[str, str], ...], wanted: tuple[str, ...], taken: set[str]) -> str | None:
+    for object_type in wanted:
+        for kind, object_id in objects:
+            if kind == object_type and object_id not in taken:
+                return object_id
+    return None
+
+
+@cache
+def _objects(scene: str) -> tuple[tuple[str, str], ...]:
+    """(type, objectId) of every object of a kitchen at its start, those in plain sight first (a stand-in
+    shut in a cabinet would fail a plan that never mentions the cabinet)."""
+    from cook2ltl.kitchen.scenes import load_scene
+
+    things = sorted(load_scene(scene).objects.values(), key=lambda t: t.object_id in _shut_away(scene))
+    return tuple((t.object_type, t.object_id) for t in things)
+
+
+@cache
+def _shut_away(scene: str) -> frozenset[str]:
+    from cook2ltl.kitchen.scenes import load_scene
+    from cook2ltl.kitchen.state import enclosing
+
+    state = load_scene(scene)
+    return frozenset(object_id for object_id in state.objects if enclosing(state, object_id) is not None)
+
+
+@cache
+def _all_types() -> frozenset[str]:
+    from cook2ltl.kitchen.scenes import scene_names
+
+    return frozenset(object_type for scene in scene_names() for object_type, _ in _objects(scene))
+
+
+def _number(scene: str) -> int:
+    return int(scene.removeprefix("FloorPlan"))
