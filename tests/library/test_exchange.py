@@ -63,6 +63,7 @@ def test_a_round_trip_keeps_entries_reviews_and_histories(source, target, tmp_pa
             "cara", "imported from lab.json", mine.body, mine.version + 1)
     assert target.lookup("recipe", "boil", ("what",), approved_only=True).body.endswith("saucepan)")
     assert target.lookup("ai2thor", "rinse", ()) is None
+    assert {e.verb for e in target.search("saucepan OR faucet")} == {"boil", "rinse"}  # the index follows imports
 
 
 def test_importing_the_same_file_again_changes_nothing(source, target, tmp_path):
