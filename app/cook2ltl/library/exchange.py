@@ -33,6 +33,7 @@ from cook2ltl.library.store import Library, LibraryEntry, Status
 from cook2ltl.library.versions import Version, now
 from cook2ltl.reduce.body import read_body
 
+ADDED, UNCHANGED, REPLACED, CONFLICT = "added", "unchanged", "replaced", "conflict"
 HINT = "export a library with `cook2ltl library export FILE` to see the format."
 
 
@@ -67,38 +68,46 @@ def import_library(library: Library, path: Path, by: str, replace_pending: bool 
     known: dict[tuple, list[LibraryEntry]] = {}
     for entry in library.entries():
         known.setdefault(_key(entry), []).append(entry)
-    added, unchanged, replaced, conflicts = [], [], [], []
+    report: dict[str, list[str]] = {ADDED: [], UNCHANGED: [], REPLACED: [], CONFLICT: []}
     note = f"imported from {path.name}"
     with library.transaction():
         for entry, history in records:
             label = f"{entry.primitives} {entry.action}"
             here = known.setdefault(_key(entry), [])
-            live = next((e for e in here if e.status != Status.REJECTED), None)
-            rejected_here = next((e for e in here if e.status == Status.REJECTED and e.body == entry.body), None)
-            if any(e.body == entry.body and (e.status == Status.REJECTED) == (entry.status == Status.REJECTED)
-                   for e in here):
-                unchanged.append(label)
-            elif entry.status == Status.REJECTED and live is not None and live.body == entry.body:
-                conflicts.append(f"{label}: the file rejects the body of entry {live.id}, {live.status} here; "
-                                 "review it")
-            elif entry.status != Status.REJECTED and rejected_here is not None:
-                conflicts.append(f"{label}: entry {rejected_here.id} rejected this body here; kept rejected")
-            elif entry.status == Status.REJECTED:
+            outcome, local, reason = _outcome(entry, here, replace_pending)
+            if outcome == ADDED:
                 here.append(_insert(library, entry, history, by, note))
-                added.append(label)
-            elif live is not None and live.status == Status.APPROVED:
-                conflicts.append(f"{label}: entry {live.id} is approved here with another body; kept")
-            elif live is not None and not replace_pending:
-                conflicts.append(f"{label}: entry {live.id} is pending here with another body; kept "
-                                 "(--replace-pending adds the file's body to it as a new version)")
-            elif live is not None:
-                here[here.index(live)] = library.edit(live.id, entry.body, by, entry.validation, entry.problems,
-                                                      note)
-                replaced.append(f"{label} (entry {live.id})")
-            else:
-                here.append(_insert(library, entry, history, by, note))
-                added.append(label)
-    return ImportReport(tuple(added), tuple(unchanged), tuple(replaced), tuple(conflicts))
+            elif outcome == REPLACED:
+                here[here.index(local)] = library.edit(local.id, entry.body, by, entry.validation, entry.problems,
+                                                       note)
+                label += f" (entry {local.id})"
+            report[outcome].append(f"{label}: {reason}" if reason else label)
+    return ImportReport(*(tuple(report[outcome]) for outcome in (ADDED, UNCHANGED, REPLACED, CONFLICT)))
+
+
+def _outcome(entry: LibraryEntry, here: list[LibraryEntry],
+             replace_pending: bool) -> tuple[str, LibraryEntry | None, str]:
+    """What importing `entry` does, given this library's entries for the same action: the outcome, the local
+    entry it concerns, and for a conflict, why."""
+    rejected = entry.status == Status.REJECTED
+    live = next((e for e in here if e.status != Status.REJECTED), None)
+    if any(e.body == entry.body and (e.status == Status.REJECTED) == rejected for e in here):
+        return UNCHANGED, None, ""
+    if rejected:
+        if live is not None and live.body == entry.body:
+            return CONFLICT, live, f"the file rejects the body of entry {live.id}, {live.status} here; review it"
+        return ADDED, None, ""  # a record of what another lab refused; never reused
+    refused = next((e for e in here if e.status == Status.REJECTED and e.body == entry.body), None)
+    if refused is not None:
+        return CONFLICT, refused, f"entry {refused.id} rejected this body here; kept rejected"
+    if live is None:
+        return ADDED, None, ""
+    if live.status == Status.APPROVED:
+        return CONFLICT, live, f"entry {live.id} is approved here with another body; kept"
+    if not replace_pending:
+        return CONFLICT, live, (f"entry {live.id} is pending here with another body; kept "
+                                "(--replace-pending adds the file's body to it as a new version)")
+    return REPLACED, live, ""
 
 
 def _insert(library: Library, entry: LibraryEntry, history: tuple[Version, ...], by: str, note: str) -> LibraryEntry:
