@@ -119,3 +119,9 @@ def test_a_primitive_set_the_kitchen_cannot_run():
     assert unsupported(robot) == ("grasp",) and unsupported(load_primitives("recipe")) == ()
     with pytest.raises(UserError, match="no action for grasp"):
         KitchenValidator(robot)
+
+
+def test_an_ingredient_things_go_into_is_a_container(validators):
+    add = action("add", ("what", "splenda"), ("what", "the mix"))
+    assert check(validators, "recipe", add, "pick_up(splenda)\nput(splenda, mix)\nstir(mix)").passed
+    assert not check(validators, "recipe", add, "put(splenda, mix)").passed

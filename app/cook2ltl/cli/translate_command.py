@@ -141,7 +141,7 @@ def show(translation: Translation, console: Console) -> None:
         f"{stats.llm_calls} LLM calls ({stats.prompt_tokens} prompt + {stats.completion_tokens} completion tokens, "
         f"{stats.llm_seconds:.1f} s); {stats.new_entries} new library entries; {stats.seconds:.1f} s in all[/dim]"
     )
-    console.print(f"[dim]{rates_line(translation)}[/dim]", highlight=False)
+    console.print(f"[dim]{rates_line(translation)}[/dim]", highlight=False, soft_wrap=True)
 
 
 def rates_line(translation: Translation) -> str:

@@ -11,7 +11,9 @@ fitting THOR type, so THOR's own rules judge the plan's order of actions:
 * a word of `NO_COUNTERPART` (a blender, a grater) has nothing that could stand for it: the plan is
   not checked, and says why;
 * any other name is an ingredient and stands for a food object the plan does not name itself
-  (a Potato, an Apple …): it must be picked up before it is put somewhere, cut with a knife in hand.
+  (a Potato, an Apple …): it must be picked up before it is put somewhere, cut with a knife in hand;
+  but an ingredient that things are put or poured into (the mix, the batter) is a container to the
+  kitchen: it stands for a Bowl, a Pot …
 
 The kitchen chosen is the one of the 30 where the most names find an object (ties: the lowest number).
 """
@@ -41,6 +43,9 @@ NO_COUNTERPART = frozenset(
 )
 # Food types that stand for a recipe's ingredients, the most widely placeable first.
 FOODS = ("Potato", "Apple", "Tomato", "Egg", "Lettuce", "Bread")
+# What a mixture things are put into stands for.
+CONTAINERS = ("Bowl", "Pot", "Pan", "Plate")
+INTO = ("put", "pour")  # primitives whose second argument is where the first goes
 
 
 @dataclass(frozen=True)
@@ -70,11 +75,12 @@ def build_frame(plan: tuple[Call, ...], liquids: frozenset[str]) -> Frame:
     missing = tuple(n for n in names if n in NO_COUNTERPART)
     if missing:
         return Frame("", {}, missing)
-    frames = [_frame_in(scene, names) for scene in scene_names()]
+    into = {call.args[1] for call in plan if call.name in INTO and len(call.args) == 2}
+    frames = [_frame_in(scene, names, into) for scene in scene_names()]
     return min(frames, key=lambda f: (len(f.missing), f.hidden, _number(f.scene)))
 
 
-def _frame_in(scene: str, names: list[str]) -> Frame:
+def _frame_in(scene: str, names: list[str], into: set[str]) -> Frame:
     from cook2ltl.kitchen.names import types_for
 
     objects = _objects(scene)
@@ -90,7 +96,8 @@ def _frame_in(scene: str, names: list[str]) -> Frame:
         if types_for(name, _all_types()):
             wanted: tuple[str, ...] = ()  # a THOR object other kitchens have: missing here
         else:
-            wanted = STAND_INS.get(name) or tuple(t for t in FOODS if t not in named_types)
+            kinds = CONTAINERS if name in into else FOODS
+            wanted = STAND_INS.get(name) or tuple(t for t in kinds if t not in named_types)
         chosen = _first_free(objects, wanted, taken)
         if chosen is None:
             missing.append(name)
