@@ -18,7 +18,7 @@ import sqlite3
 import threading
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 from pathlib import Path
 
@@ -131,13 +131,8 @@ class Library:
         fits: a pending one is rejected in the same transaction, an approved one wins and is returned unchanged.
         If another process stored the same action first, that entry is returned."""
         db = self._db()
-        created = now()
-        row = {
-            "primitives": primitives, "verb": verb, "signature": ",".join(signature), "body": body,
-            "status": Status.PENDING.value, "model": model, "prompt_hash": prompt_hash, "created": created,
-            "validation": checked(validation), "problems": json.dumps(list(problems)),
-            "example": json.dumps(dict(example or {})), "version": 1, "reviewed_by": None, "reviewed_at": None,
-        }
+        entry = LibraryEntry(0, primitives, verb, signature, body, Status.PENDING, model, prompt_hash, now(),
+                             checked(validation), tuple(problems), example=tuple(dict(example or {}).items()))
         try:
             with self._writing():
                 old = self._row(replacing, missing_ok=True) if replacing is not None else None
@@ -145,14 +140,15 @@ class Library:
                     return _entry(old)
                 if old is not None and old["status"] == Status.PENDING:
                     self._set_status(replacing, Status.REJECTED, REPLACER)
-                new_id = db[TABLE].insert(row).last_pk
-                versions.record(db, Version(new_id, 1, body, validation, tuple(problems), model, created, "learnt"))
+                new_id = db[TABLE].insert(_columns(entry)).last_pk
+                versions.record(db, Version(new_id, 1, body, validation, entry.problems, model, entry.created,
+                                            "learnt"))
         except sqlite3.IntegrityError:
             existing = self.lookup(primitives, verb, signature)
             if existing is None:
                 raise
             return existing
-        return _entry({**row, "id": new_id})
+        return replace(entry, id=new_id)
 
     def set_status(self, entry_id: int, status: Status | str, by: str | None = None,
                    force: bool = False) -> LibraryEntry:
@@ -192,22 +188,12 @@ class Library:
         """Store an entry as it is, status, review and every version included (an import); its id is new."""
         db = self._db()
         with self._writing():
-            row = {
-                "primitives": entry.primitives, "verb": entry.verb, "signature": ",".join(entry.signature),
-                "body": entry.body, "status": Status(entry.status).value, "model": entry.model,
-                "prompt_hash": entry.prompt_hash, "created": entry.created,
-                "validation": checked(entry.validation), "problems": json.dumps(list(entry.problems)),
-                "reviewed_by": entry.reviewed_by, "reviewed_at": entry.reviewed_at,
-                "example": json.dumps(dict(entry.example)), "version": history[-1].version,
-            }
             try:
-                new_id = db[TABLE].insert(row).last_pk
+                new_id = db[TABLE].insert(_columns(replace(entry, version=history[-1].version))).last_pk
             except sqlite3.IntegrityError as error:
                 raise self._taken(entry) from error
             for version in history:
-                versions.record(db, Version(new_id, version.version, version.body, version.validation,
-                                            version.problems, version.author, version.at, version.note,
-                                            version.restores))
+                versions.record(db, replace(version, entry_id=new_id))
         return self.get(new_id)
 
     def close(self) -> None:
@@ -308,6 +294,17 @@ class Library:
 
 def _usable(approved_only: bool) -> str:
     return "status = 'approved'" if approved_only else "status != 'rejected'"
+
+
+def _columns(entry: LibraryEntry) -> dict:
+    """An entry as a row of `actions`, without its id."""
+    return {
+        "primitives": entry.primitives, "verb": entry.verb, "signature": ",".join(entry.signature),
+        "body": entry.body, "status": Status(entry.status).value, "model": entry.model,
+        "prompt_hash": entry.prompt_hash, "created": entry.created, "validation": checked(entry.validation),
+        "problems": json.dumps(list(entry.problems)), "reviewed_by": entry.reviewed_by,
+        "reviewed_at": entry.reviewed_at, "example": json.dumps(dict(entry.example)), "version": entry.version,
+    }
 
 
 def _entry(row: dict) -> LibraryEntry:
