@@ -64,6 +64,10 @@ class ActionResult:
     plan: tuple[Call, ...]  # the same down to primitives; empty when there is no admissible plan
     validation: Validation | None = None  # the kitchen check of a new reduction
     attempts: tuple[Reduction, ...] = ()  # the model's other reductions of this action (failed, then repaired)
+    # For a library hit: the entry's own kitchen check (passed, failed, unchecked) and problems, so a plan
+    # that failed when it was learnt is never reused silently.
+    entry_validation: str | None = None
+    entry_problems: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -231,7 +235,9 @@ class _Run:
             if plan:
                 self._count(library_hits=1)
                 reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
-                return ActionResult(frame_index, reduction, plan), plan_element(plan, primitives)
+                result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
+                                      entry_problems=entry.problems)
+                return result, plan_element(plan, primitives)
             stale = entry.id if entry else None  # written for another version of the primitive set
         checked = reduce_checked(action, primitives, self.verbs, self.t.model, self.t.settings, self._expand,
                                  self.t.validator, self.t.repairs)

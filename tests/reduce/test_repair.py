@@ -113,3 +113,12 @@ def test_reuse_respects_review_status(library):
     rejected = translated(Translator(primitives, model, library))
     assert rejected.steps[0].actions[0].reduction.source == Source.LLM and model.calls == 3
     assert rejected.steps[0].actions[0].reduction.entry_id != first.id
+
+
+def test_a_failed_entry_reused_says_so(validators, library):
+    translator = Translator(load_primitives("ai2thor"), ScriptedModel({"microwave": BAD}), library,
+                            validator=validators("ai2thor"), repairs=0)
+    translated(translator)
+    hit = translated(translator).steps[0].actions[0]
+    assert hit.reduction.source == Source.LIBRARY and hit.entry_validation == "failed"
+    assert hit.entry_problems[0].startswith("line 2 put(potato, microwave)")

@@ -78,3 +78,9 @@ def test_approved_only_reduces_pending_actions_again(cli):
     assert again["stats"]["library_hits"] == 0 and again["stats"]["llm_calls"] == 2
     reused = json.loads(cli("--json", "--repairs", "0").stdout)
     assert reused["stats"]["library_hits"] == 2 and reused["stats"]["llm_calls"] == 0
+
+
+def test_a_reused_entry_that_failed_is_shown(cli):
+    cli("--repairs", "0")
+    shown = cli("--repairs", "0").output
+    assert shown.count("kitchen check when learnt: failed") == 2 and "! line 1 slice(tomato)" in shown

@@ -98,6 +98,8 @@ def with_validation(data: dict, translation: Translation) -> dict:
             "status": check.status, "problems": list(check.messages()), "scene": check.scene,
             "seconds": round(check.seconds, 4)}
         action["repairs"] = [[call.text() for call in attempt.body] for attempt in result.attempts]
+        if result.entry_validation is not None:
+            action["library_validation"] = {"status": result.entry_validation, "problems": list(result.entry_problems)}
     counts = rates(translation)
     data["stats"] |= {"executability": counts.executability, "validated_rate": counts.validated_rate,
                       "written_lines": counts.written_lines, "admissible_lines": counts.admissible_lines}
@@ -175,3 +177,7 @@ def _show_reduction(result, console: Console) -> None:
                       f"{repaired})[/dim]", highlight=False)
         for message in check.messages():
             console.print(f"            [{style}]! {message}[/{style}]", highlight=False)
+    if result.entry_validation == "failed":
+        console.print("            [red]kitchen check when learnt: failed[/red]", highlight=False)
+        for message in result.entry_problems:
+            console.print(f"            [red]! {message}[/red]", highlight=False)
