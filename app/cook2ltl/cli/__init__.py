@@ -11,6 +11,7 @@ import typer
 from rich.console import Console
 from rich.markup import escape
 
+from cook2ltl.cli.bench_command import bench_command
 from cook2ltl.cli.library_command import library_app
 from cook2ltl.cli.models_command import models_app
 from cook2ltl.cli.parse_command import parse_command
@@ -24,6 +25,7 @@ app = typer.Typer(help="Cooking recipes to LTL task specifications, offline. Wit
 app.command("parse")(parse_command)
 app.command("translate")(translate_command)
 app.command("rollout")(rollout_command)
+app.command("bench")(bench_command)
 app.add_typer(library_app, name="library")
 app.add_typer(models_app, name="models")
 app.add_typer(ltl_app, name="ltl")

@@ -1,0 +1,28 @@
+"""The parsing backends, loaded once per process and shared by every benchmark of a `cook2ltl bench all`."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from functools import cache
+
+from cook2ltl.parse.backends import DependencyParser, SpanExtractor
+
+
+@dataclass(frozen=True)
+class Parsers:
+    spans: SpanExtractor
+    dependencies: DependencyParser
+    load_seconds: float  # both loaded and run once, when first asked for
+
+
+@cache
+def parsers() -> Parsers:
+    from cook2ltl.settings import load_settings
+    from cook2ltl.stack import dependency_parser, span_extractor
+
+    started = time.perf_counter()
+    spans, dependencies = span_extractor(load_settings()), dependency_parser()
+    spans.extract(["Warm up the oven."])
+    dependencies.parse(["Warm up the oven."])
+    return Parsers(spans, dependencies, time.perf_counter() - started)

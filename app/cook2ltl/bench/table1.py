@@ -1,0 +1,247 @@
+"""The paper's Table I: the ablation AR* / AR / AR+𝔸 over its 50 evaluation recipes.
+
+Every run parses the recipes once, then translates them with each variant in VARIANTS order: AR+𝔸 from an
+empty library growing over the 50 recipes; AR+𝔸 again against the library it grew (the warm rerun); AR+𝔸 in
+approved-only mode against that library once a reviewer ("bench") has approved the entries whose plans passed
+the kitchen check; AR+𝔸 with repairs (a plan the kitchen refuses goes back to the model twice, as `cook2ltl
+translate` does), from an empty library; AR (primitives passed through) and AR* (every action reduced). Runs
+differ by the model's seed; the model decodes at temperature 0, so the counts agree between runs and only
+the times vary.
+
+Every new reduction is run in the kitchen (cook2ltl.reduce.validation) without changing what is cached or
+which actions reach the model (no repairs, except in the repair variant): the validated rate is the share of
+new reductions whose plan the kitchen ran. Time is the translation's without those checks.
+
+Executability is the paper's: the fraction of the actions of the generated plans that are admissible, the
+library's plans included. An admissible action is a primitive call that fits the primitive set; inadmissible
+ones are the model's dropped lines and one for every recipe action left without an admissible plan. The
+pipeline's own `rates` (model lines only, library hits not counted) is kept beside it as `line_executability`.
+"""
+
+from __future__ import annotations
+
+import csv
+import tempfile
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from cook2ltl import paths
+from cook2ltl.bench.results import mean_std, pm, write
+from cook2ltl.domain import ParsedRecipe
+from cook2ltl.errors import UserError
+from cook2ltl.pipeline import Finished, Translation, Translator, Variant, rates, translate
+from cook2ltl.reduce.validation import PlanValidator
+
+RECIPES_FILE = "eval_recipes_50.csv"
+COLD, WARM, APPROVED, REPAIR = "AR+A", "AR+A warm", "AR+A approved-only", "AR+A repair"
+# What the library saves first, the costly baselines last; the last three need COLD's library.
+VARIANTS = (COLD, WARM, APPROVED, REPAIR, "AR", "AR*")
+SMOKE_VARIANTS = (COLD, WARM, "AR*")  # the other variants' logic is covered by the unit tests
+REVIEWER = "bench"
+REPAIRS = 2
+# Table I of the paper (gpt-3.5-turbo, 10 runs): executability, minutes, API calls.
+PAPER = {"AR*": (0.91, 14.85, 275), "AR": (0.92, 9.89, 231), "AR+A": (0.94, 6.05, 134)}
+LABELS = {"AR*": "AR* (reduce every action)", "AR": "AR (skip primitives)", COLD: "AR+𝔸 (library from empty)",
+          WARM: "AR+𝔸 warm rerun (grown library)", APPROVED: "AR+𝔸 approved-only (checked plans approved)",
+          REPAIR: "AR+𝔸 with repairs (library from empty)"}
+
+
+@dataclass(frozen=True)
+class Stage:
+    """The parsed recipes and the backends shared by every run."""
+
+    numbers: tuple[str, ...]
+    recipes: tuple[ParsedRecipe, ...]
+    load_seconds: float  # span model and dependency parser
+    parse_seconds: float
+
+
+def recipes_file() -> Path:
+    """The evaluation recipes: the project's copy (tests/data), else the shared original."""
+    candidates = [paths.PROJECT_ROOT / "tests" / "data" / RECIPES_FILE, paths.shared_data_dir() / "cook2ltl" / RECIPES_FILE]
+    found = next((path for path in candidates if path.is_file()), None)
+    if found is None:
+        raise UserError(f"The evaluation recipes ({RECIPES_FILE}) are not here: looked at "
+                        f"{', '.join(str(p) for p in candidates)}.",
+                        "run from a checkout of cook2ltl, or set $COOK2LTL_SHARED_DATA to the folder that holds "
+                        f"cook2ltl/{RECIPES_FILE}.")
+    return found
+
+
+def eval_recipes(limit: int | None = None) -> list[tuple[str, str]]:
+    """(number, edited text) of the paper's evaluation recipes, in the file's order."""
+    with recipes_file().open(encoding="utf-8") as handle:
+        rows = [(row["Number"], row["Edited text"]) for row in csv.DictReader(handle)]
+    return rows[:limit]
+
+
+def parse_all(recipes: list[tuple[str, str]]) -> Stage:
+    from cook2ltl.bench.backends import parsers
+    from cook2ltl.parse import parse_recipe
+
+    backends = parsers()
+    started = time.perf_counter()
+    parsed = tuple(parse_recipe(text, backends.spans, backends.dependencies) for _, text in recipes)
+    return Stage(tuple(n for n, _ in recipes), parsed, backends.load_seconds, time.perf_counter() - started)
+
+
+def plan_admissibility(translation: Translation) -> tuple[int, int]:
+    """(admissible, inadmissible) actions of a recipe's generated plans."""
+    admissible = inadmissible = 0
+    for step in translation.steps:
+        for result in step.actions:
+            admissible += len(result.plan)
+            inadmissible += len(result.reduction.dropped) + (0 if result.plan else 1)
+    return admissible, inadmissible
+
+
+def run_variant(stage: Stage, translator: Translator, progress: Callable[[dict], None]) -> dict:
+    """One variant over every recipe: summed statistics, both executabilities, validated rate, per-recipe calls."""
+    totals: dict[str, float] = {"admissible": 0, "inadmissible": 0, "check_seconds": 0.0}
+    translations, per_recipe = [], []
+    for number, recipe in zip(stage.numbers, stage.recipes):
+        translation = next(e.translation for e in translate(recipe, translator) if isinstance(e, Finished))
+        translations.append(translation)
+        admissible, inadmissible = plan_admissibility(translation)
+        totals["admissible"] += admissible
+        totals["inadmissible"] += inadmissible
+        totals["check_seconds"] += sum(r.validation.seconds for s in translation.steps for r in s.actions
+                                       if r.validation is not None)
+        for key, value in vars(translation.stats).items():
+            totals[key] = totals.get(key, 0) + value
+        per_recipe.append({"recipe": number, "actions": translation.stats.actions,
+                           "llm_calls": translation.stats.llm_calls, "seconds": round(translation.stats.seconds, 3)})
+        progress(_summary(totals, translations, stage) | {"per_recipe": per_recipe})
+    return _summary(totals, translations, stage) | {"per_recipe": per_recipe}
+
+
+def _summary(totals: dict[str, float], translations: list[Translation], stage: Stage) -> dict:
+    planned = totals["admissible"] + totals["inadmissible"]
+    counts = rates(*translations)
+    return {
+        **{key: round(value, 3) if isinstance(value, float) else value for key, value in totals.items()},
+        "executability": totals["admissible"] / planned if planned else 0.0,
+        "line_executability": counts.executability, "new_reductions": counts.new_reductions,
+        "validated_rate": counts.validated_rate,
+        # The recipes' parse is shared by the variants of a run; each variant's time includes it.
+        "wall_seconds": round(totals.get("seconds", 0.0) - totals["check_seconds"] + stage.parse_seconds, 3),
+        "recipes_done": len(translations),
+    }
+
+
+def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int | None, out: Path,
+               echo: Callable[[str], None]) -> dict:
+    """Table I with the real models; the record and table are rewritten after each recipe."""
+    from cook2ltl.reduce.llm import SEED, load_model
+    from cook2ltl.reduce.primitives import load_primitives
+
+    check_variants(variants)
+    recipes = eval_recipes(limit)
+    stage = parse_all(recipes)
+    echo(f"{len(recipes)} recipes parsed in {stage.parse_seconds:.1f} s (models loaded in {stage.load_seconds:.1f} s)")
+    model, primitives = load_model(model_name), load_primitives("recipe")
+    started = time.perf_counter()
+    model.complete("", "x", 'root ::= "x"', 1)  # the weights are read outside the timings
+    record = {"model": model_name, "recipes": len(recipes), "primitives": primitives.name,
+              "parse_seconds": round(stage.parse_seconds, 3), "load_seconds": round(stage.load_seconds, 3),
+              "llm_load_seconds": round(time.perf_counter() - started, 3), "runs": []}
+
+    def report(rows: list[dict]) -> None:
+        write(out, "table1", record | {"runs": rows}, table1_markdown(rows, len(recipes)))
+
+    from cook2ltl.reduce.validation import KitchenValidator
+
+    with KitchenValidator(primitives) as validator:
+        record["runs"] = measure(stage, model, primitives, validator, runs, variants, SEED, report, echo)
+    return record
+
+
+def check_variants(variants: tuple[str, ...]) -> None:
+    unknown = set(variants) - set(VARIANTS)
+    if unknown:
+        raise UserError(f"unknown variant(s) {', '.join(sorted(unknown))}", f"choose from {', '.join(VARIANTS)}.")
+    if {WARM, APPROVED} & set(variants) and COLD not in variants:
+        raise UserError("the warm rerun and approved-only mode reuse the library that AR+A grows in the same run",
+                        "ask for AR+A too (it runs first).")
+
+
+def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int, variants: tuple[str, ...],
+            seed: int, report: Callable[[list[dict]], None], echo: Callable[[str], None]) -> list[dict]:
+    """Each run (its own seed and empty libraries) over the variants in VARIANTS order; `report` gets every row
+    so far after each recipe, the running one last."""
+    from cook2ltl.library import Library
+
+    rows: list[dict] = []
+    for index in range(runs):
+        model.seed = seed + index
+        with tempfile.TemporaryDirectory() as folder:
+            grown, fresh = Library(Path(folder) / "grown.sqlite"), Library(Path(folder) / "repair.sqlite")
+            try:
+                for name in [v for v in VARIANTS if v in variants]:
+                    if name == APPROVED:
+                        approve_checked(grown)
+                    variant = Variant(name) if name in ("AR", "AR*") else Variant.AR_LIBRARY
+                    library = fresh if name == REPAIR else grown if variant == Variant.AR_LIBRARY else None
+                    translator = Translator(primitives, model, library, variant, validator=validator,
+                                            repairs=REPAIRS if name == REPAIR else 0, approved_only=name == APPROVED)
+                    head = {"variant": name, "model": model.name, "seed": model.seed, "run": index + 1}
+                    rows.append(head | run_variant(stage, translator, lambda partial: report(rows + [head | partial])))
+                    report(rows)
+                    echo(f"run {index + 1} {name:<18} calls {rows[-1]['llm_calls']:>4}  executability "
+                         f"{rows[-1]['executability']:.3f}  {rows[-1]['wall_seconds'] / 60:.2f} min")
+            finally:
+                grown.close()
+                fresh.close()
+    return rows
+
+
+def approve_checked(library) -> int:
+    """Approve every pending entry whose plan passed the kitchen check, as a reviewer trusting the check would."""
+    chosen = [e for e in library.entries() if e.status.value == "pending" and e.validation == "passed"]
+    for entry in chosen:
+        library.set_status(entry.id, "approved", by=REVIEWER)
+    return len(chosen)
+
+
+def table1_markdown(rows: list[dict], total: int) -> str:
+    """Mean ± std per variant and model over the runs that covered all `total` recipes, beside the paper; a
+    variant with no finished run shows its running one, over the recipes it has done."""
+    lines = ["| variant | model | runs | executability | validated rate | LLM calls (+ repairs) | prompt tokens "
+             "| completion tokens | time (min) | paper: executability · calls · min |", "|---" * 10 + "|"]
+    groups: dict[tuple[str, str], list[dict]] = {}
+    for row in rows:
+        groups.setdefault((row["variant"], row["model"]), []).append(row)
+    complete_groups = {key: [r for r in group if r["recipes_done"] == total] for key, group in groups.items()}
+    for (variant, model), group in groups.items():
+        complete = complete_groups[(variant, model)] or group[-1:]
+        if len(complete) == len(group) and complete[0]["recipes_done"] == total:
+            runs = f"{len(complete)}"
+        elif complete[0]["recipes_done"] == total:
+            runs = f"{len(complete)} (+{len(group) - len(complete)} partial)"
+        else:
+            runs = f"partial: {complete[0]['recipes_done']} of {total} recipes"
+        paper = PAPER.get(variant)
+        paper_cell = f"{paper[0]:.2f} · {paper[2]} · {paper[1]:.2f}" if paper else "—"
+        rates_ = [r["validated_rate"] for r in complete if r.get("validated_rate") is not None]
+        repairs = [r.get("repair_calls", 0) for r in complete]
+        lines.append(
+            f"| {LABELS[variant]} | {model} | {runs} | {pm([r['executability'] for r in complete])} "
+            f"| {pm(rates_) if rates_ else '—'} | {pm([r['llm_calls'] for r in complete], 0)}"
+            + (f" (+ {pm(repairs, 0)})" if any(repairs) else "")
+            + f" | {pm([r['prompt_tokens'] for r in complete], 0)} | {pm([r['completion_tokens'] for r in complete], 0)} "
+            f"| {pm([r['wall_seconds'] / 60 for r in complete])} | {paper_cell} |")
+    return "\n".join(lines) + "\n" + _ratios({key: rows for key, rows in complete_groups.items() if rows})
+
+
+def _ratios(groups: dict[tuple[str, str], list[dict]]) -> str:
+    """The library's saving in calls against AR* and AR, per model, from the means."""
+    notes = []
+    for model in dict.fromkeys(m for _, m in groups):
+        calls = {v: mean_std([r["llm_calls"] for r in rows])[0] for (v, m), rows in groups.items() if m == model}
+        if calls.get(COLD) is not None and calls.get("AR*"):
+            against_ar = f", {calls[COLD] / calls['AR']:.2f} × AR" if calls.get("AR") else ""
+            notes.append(f"{model}: AR+𝔸 makes {calls[COLD] / calls['AR*']:.2f} × the calls of AR*{against_ar} "
+                         "(paper: 0.49 × AR*, 0.58 × AR).")
+    return ("\n" + "\n".join(notes) + "\n") if notes else ""

@@ -1,0 +1,60 @@
+"""`cook2ltl bench`: the paper's Tables I and II, the span model against a spaCy baseline, micro timings."""
+
+from __future__ import annotations
+
+from enum import StrEnum
+from pathlib import Path
+from typing import Optional
+
+import typer
+from rich.console import Console
+
+SMOKE_MODEL = "smollm2-135m"
+
+
+class Benchmark(StrEnum):
+    TABLE1 = "table1"
+    TABLE2 = "table2"
+    NER = "ner"
+    MICRO = "micro"
+    ALL = "all"
+
+
+def bench_command(
+    which: Benchmark = typer.Argument(Benchmark.ALL, help="Which benchmark; `all` runs them in this order."),
+    runs: Optional[int] = typer.Option(None, help="Seeded runs of Table I (default 3) or consecutive runs per "
+                                                    "task of Table II (default 10)."),
+    model: Optional[str] = typer.Option(None, help="Language model of the manifest (default: the translator's)."),
+    smoke: bool = typer.Option(False, help="A tiny, fast pass over everything (1 recipe, smollm2, 1 run): "
+                                           "checks the benchmarks work, measures nothing worth keeping."),
+    out: Path = typer.Option(Path("bench/results"), help="Folder for the JSON and markdown results."),
+    variant: Optional[list[str]] = typer.Option(None, help="Table I variants, repeatable: AR+A, 'AR+A warm', "
+                                                           "'AR+A approved-only', 'AR+A repair', AR, AR* (default all)."),
+    recipes: Optional[int] = typer.Option(None, help="Table I on the first N of the 50 recipes only."),
+    tasks: str = typer.Option("paper", help="Table II tasks: paper (the 4 of the paper), suite or all."),
+) -> None:
+    """Measure and write bench/results/<name>.json and .md (a benchmark, not a test: it takes long)."""
+    from cook2ltl.reduce.llm import DEFAULT_MODEL
+
+    console = Console(stderr=True)
+    echo = lambda text: console.print(text, highlight=False, markup=False, soft_wrap=True)  # noqa: E731
+    model = model or (SMOKE_MODEL if smoke else DEFAULT_MODEL)
+    chosen = [b for b in Benchmark if b != Benchmark.ALL] if which == Benchmark.ALL else [which]
+    if Benchmark.TABLE1 in chosen:
+        from cook2ltl.bench.table1 import SMOKE_VARIANTS, VARIANTS, run_table1
+
+        chosen_variants = tuple(variant or (SMOKE_VARIANTS if smoke else VARIANTS))
+        run_table1(model, 1 if smoke else runs or 3, chosen_variants, 1 if smoke else recipes, out, echo)
+    if Benchmark.TABLE2 in chosen:
+        from cook2ltl.bench.table2 import run_table2
+
+        run_table2(model, 1 if smoke else runs or 10, "smoke" if smoke else tasks, out, echo)
+    if Benchmark.NER in chosen:
+        from cook2ltl.bench.ner import run_ner
+
+        run_ner(smoke, out, echo)
+    if Benchmark.MICRO in chosen:
+        from cook2ltl.bench.micro import run_micro
+
+        run_micro(model, smoke, out, echo)
+    echo(f"results in {out}/")

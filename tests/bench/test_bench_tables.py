@@ -1,0 +1,143 @@
+"""The benchmark's own arithmetic, with fake parsers and a scripted model: what Table I counts and prints."""
+
+import json
+
+import pytest
+
+from cook2ltl.bench.results import mean_std, pm, write
+from cook2ltl.bench.table1 import VARIANTS, Stage, check_variants, measure, table1_markdown
+from cook2ltl.bench.table2 import table2_markdown
+from cook2ltl.errors import UserError
+from cook2ltl.parse import parse_recipe
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.reduce.validation import LineProblem, Validation
+from tests.fakes import ScriptedDependencies, ScriptedSpans
+from tests.reduce.fake_model import ScriptedModel
+
+RECIPES = {
+    "1": ("Boil the egg. Put the egg in a bowl.",
+          {"Boil the egg.": [("VERB", "Boil"), ("WHAT", "the egg")],
+           "Put the egg in a bowl.": [("VERB", "Put"), ("WHAT", "the egg"), ("WHERE", "a bowl")]}),
+    "2": ("Boil the potato. Fry the onion. Melt the butter.",
+          {"Boil the potato.": [("VERB", "Boil"), ("WHAT", "the potato")],
+           "Fry the onion.": [("VERB", "Fry"), ("WHAT", "the onion")],
+           "Melt the butter.": [("VERB", "Melt"), ("WHAT", "the butter")]}),
+}
+BOIL = "turn_on(stovetop)\nturn_off(stovetop)"  # admissible for any object
+FRY = "fry(onion)\nexplode(onion)"  # nothing admissible: two dropped lines and no plan
+MELT = "turn_on(stovetop)"  # admissible, but the fake kitchen refuses one-line plans
+
+
+class OneLinersFail:
+    """A kitchen check that passes plans of two lines or more."""
+
+    def __init__(self):
+        self.checked = []
+
+    def validate(self, action, plan):
+        self.checked.append(action.verb)
+        return Validation(len(plan) > 1, () if len(plan) > 1 else (LineProblem(1, plan[0].text(), "too short"),),
+                          "FloorPlan1", 0.25)
+
+    def close(self):
+        pass
+
+
+def stage() -> Stage:
+    parsed = tuple(parse_recipe(text, ScriptedSpans(spans), ScriptedDependencies()) for text, spans in RECIPES.values())
+    return Stage(tuple(RECIPES), parsed, load_seconds=1.0, parse_seconds=0.5)
+
+
+def measured(runs=1, variants=VARIANTS):
+    reports = []
+    model = ScriptedModel({"boil": BOIL, "fry": FRY, "melt": MELT, "put": "put(egg, bowl)"})
+    rows = measure(stage(), model, load_primitives("recipe"), OneLinersFail(), runs, variants, 7, reports.append,
+                   lambda _: None)
+    return rows, reports, model
+
+
+def test_each_variant_counts_calls_as_the_paper_defines_it():
+    rows, _, model = measured()
+    by_variant = {row["variant"]: row for row in rows}
+    assert [row["variant"] for row in rows] == list(VARIANTS)
+    # AR+A: boil egg, fry, melt reduced; put a primitive; boil potato from the library.
+    assert by_variant["AR+A"]["llm_calls"] == 3 and by_variant["AR+A"]["library_hits"] == 1
+    assert by_variant["AR+A warm"]["llm_calls"] == 1  # only fry, which never made it into the library
+    assert by_variant["AR"]["llm_calls"] == 4 and by_variant["AR*"]["llm_calls"] == 5
+    assert model.calls == sum(row["llm_calls"] + row["repair_calls"] for row in rows)
+    assert {row["actions"] for row in rows} == {5}
+
+
+def test_validated_rate_approved_only_and_repairs():
+    rows, _, _ = measured()
+    by_variant = {row["variant"]: row for row in rows}
+    cold = by_variant["AR+A"]
+    # boil passed, melt refused (one line), fry had no plan to check; nothing was repaired.
+    assert cold["new_reductions"] == 3 and cold["validated"] == 1 and cold["checked"] == 2
+    assert cold["validated_rate"] == pytest.approx(1 / 3) and cold["repair_calls"] == 0
+    assert cold["check_seconds"] == pytest.approx(0.5)
+    assert cold["wall_seconds"] == pytest.approx(cold["seconds"] - 0.5 + 0.5, abs=1e-3)  # checks out, parse in
+    # Only boil was approved: melt's pending entry is skipped, so melt and fry go to the model.
+    approved = by_variant["AR+A approved-only"]
+    assert approved["llm_calls"] == 2 and approved["library_hits"] == 2
+    # From an empty library with repairs: melt fails, is written again twice and still fails.
+    repair = by_variant["AR+A repair"]
+    assert repair["llm_calls"] == 3 and repair["repair_calls"] == 2 and repair["validated"] == 1
+
+
+def test_executability_is_admissible_plan_actions_over_all_generated():
+    rows, _, _ = measured(variants=("AR",))
+    # boil egg 2 + put 1 + boil potato 2 + melt 1 admissible; fry: 2 dropped lines and no plan.
+    assert rows[0]["admissible"] == 6 and rows[0]["inadmissible"] == 3
+    assert rows[0]["executability"] == pytest.approx(6 / 9)
+    # The pipeline's rate counts the model's lines only: 5 of 7.
+    assert rows[0]["line_executability"] == pytest.approx(5 / 7)
+
+
+def test_runs_take_their_own_seed_and_library_and_report_after_every_recipe():
+    rows, reports, _ = measured(runs=2, variants=("AR+A",))
+    assert [(row["run"], row["seed"], row["llm_calls"]) for row in rows] == [(1, 7, 3), (2, 8, 3)]
+    partial = [report[-1]["recipes_done"] for report in reports]
+    assert partial == [1, 2, 2, 1, 2, 2]  # each recipe as it finishes, then the finished row
+    assert [(r["recipe"], r["actions"], r["llm_calls"]) for r in rows[0]["per_recipe"]] == [("1", 2, 1), ("2", 3, 2)]
+
+
+def test_the_markdown_has_mean_and_std_beside_the_paper_and_marks_unfinished_runs():
+    rows, _, _ = measured(runs=2)
+    running = dict(rows[-1], run=3, recipes_done=1, llm_calls=1)
+    table = table1_markdown(rows + [running], total=2)
+    lines = table.splitlines()
+    assert lines[0].startswith("| variant | model | runs | executability | validated rate | LLM calls")
+    ar_star = next(line for line in lines if line.startswith("| AR* "))
+    assert "| 2 (+1 partial) |" in ar_star and "| 5 ± 0 |" in ar_star and "0.91 · 275 · 14.85" in ar_star
+    repair = next(line for line in lines if line.startswith("| AR+𝔸 with repairs"))
+    assert "| 0.33 ± 0.00 | 3 ± 0 (+ 2 ± 0) |" in repair  # validated rate, calls and repair calls
+    assert "scripted: AR+𝔸 makes 0.60 × the calls of AR*, 0.75 × AR" in table
+    only_partial = table1_markdown([dict(rows[-1], recipes_done=1)], total=2)
+    assert "| partial: 1 of 2 recipes |" in only_partial
+
+
+def test_a_warm_rerun_needs_its_cold_run():
+    with pytest.raises(UserError, match="reuse the library"):
+        check_variants(("AR+A warm", "AR"))
+    with pytest.raises(UserError, match="unknown variant"):
+        check_variants(("AR+B",))
+
+
+def test_mean_std_and_written_files(tmp_path):
+    assert mean_std([1.0, 3.0]) == (2.0, pytest.approx(1.4142, abs=1e-4))
+    assert pm([5.0]) == "5.00 ± 0.00"
+    json_path, md_path = write(tmp_path / "out", "demo", {"value": 1}, "| a |\n")
+    record = json.loads(json_path.read_text())
+    assert record["benchmark"] == "demo" and record["value"] == 1 and record["machine"]["cpus"] >= 1
+    assert md_path.read_text().splitlines()[1] == "| a |"
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["demo.json", "demo.md"]
+
+
+def test_table2_side_by_side():
+    run = {"plan": [], "sources": [], "llm_calls": 0, "plan_seconds": 1.0, "rollout_seconds": 0.5, "actions": 3}
+    record = {"model": "m", "runs": 2, "tasks": ["cut-bread"], "variants": {
+        "AR": {"runs": 2, "tasks": {"cut-bread": [dict(run, success=True), dict(run, success=False)]}},
+        "AR+A": {"runs": 2, "tasks": {"cut-bread": [dict(run, success=True), dict(run, success=True)]}}}}
+    row = table2_markdown(record).splitlines()[2]
+    assert row == "| cut-bread | 1/2 | 1.50 ± 0.00 | 2/2 | 1.50 ± 0.00 | 9/10 · 12.85 | 8/10 · 1.12 |"
