@@ -5,7 +5,7 @@ import json
 import pytest
 
 from cook2ltl.bench.results import mean_std, pm, write
-from cook2ltl.bench.table1 import VARIANTS, Stage, check_variants, measure, table1_markdown
+from cook2ltl.bench.table1 import VARIANTS, Stage, check_variants, library_bound, measure, table1_markdown
 from cook2ltl.bench.table2 import table2_markdown
 from cook2ltl.errors import UserError
 from cook2ltl.parse import parse_recipe
@@ -141,3 +141,15 @@ def test_table2_side_by_side():
         "AR+A": {"runs": 2, "tasks": {"cut-bread": [dict(run, success=True), dict(run, success=True)]}}}}
     row = table2_markdown(record).splitlines()[2]
     assert row == "| cut-bread | 1/2 | 1.50 ± 0.00 | 2/2 | 1.50 ± 0.00 | 9/10 · 12.85 | 8/10 · 1.12 |"
+
+
+def test_the_library_bound_counts_distinct_keys_of_reduced_actions():
+    # put is passed through; boil (what) twice, fry and melt once each.
+    assert library_bound(stage(), load_primitives("recipe")) == {
+        "actions": 5, "primitive": 1, "reduced_by_ar": 4, "distinct_keys": 3, "distinct_verbs": 3}
+
+
+def test_the_bound_is_stated_under_the_table():
+    rows, _, _ = measured(variants=("AR+A", "AR*"))
+    table = table1_markdown(rows, 2, library_bound(stage(), load_primitives("recipe")))
+    assert "AR+𝔸 needs at least 3 calls: 0.75 × AR, 0.60 × AR*." in table
