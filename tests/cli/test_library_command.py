@@ -132,10 +132,12 @@ def test_an_edit_without_the_kitchen_or_without_example_values_is_unchecked(seed
 
 
 def test_history_and_undo(seeded):
+    cook2ltl("library", "approve", "1", "--by", "ann", "--library", str(seeded))
     cook2ltl("library", "edit", "1", "--body-file", "-", "--no-validate", "--by", "bob", "--library", str(seeded),
              stdin="pick_up($what)\nput($what, saucepan)")
     history = cook2ltl("library", "history", "1", "--library", str(seeded))
     assert history.returncode == 0 and "saucepan" in history.stdout and "bob" in history.stdout
+    assert "version 1 approved by ann at 20" in history.stdout
     undone = cook2ltl("library", "undo", "1", "--library", str(seeded))
     assert undone.returncode == 0 and "the body of version 1 is back as version 3" in undone.stdout
     current, versions = entry(seeded)

@@ -64,6 +64,21 @@ def test_a_round_trip_keeps_entries_reviews_and_histories(source, target, tmp_pa
     assert target.lookup("recipe", "boil", ("what",), approved_only=True).body.endswith("saucepan)")
     assert target.lookup("ai2thor", "rinse", ()) is None
     assert {e.verb for e in target.search("saucepan OR faucet")} == {"boil", "rinse"}  # the index follows imports
+    for mine, theirs in zip(source.entries(), target.entries()):
+        assert [(r.version, r.status, r.reviewer, r.at) for r in source.reviews(mine.id)] == [
+            (r.version, r.status, r.reviewer, r.at) for r in target.reviews(theirs.id)]
+    assert [(r.version, r.reviewer) for r in target.reviews(1)] == [(2, "ann")]
+
+
+def test_an_export_from_before_the_review_log_is_read(source, target, tmp_path):
+    data = good_export(tmp_path, source)
+    data["schema_version"] = 2
+    for entry in data["entries"]:
+        del entry["reviews"]
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(data))
+    assert len(import_library(target, path, by="cara").added) == 3
+    assert target.get(1).reviewed_by == "ann" and target.reviews(1) == ()
 
 
 def test_importing_the_same_file_again_changes_nothing(source, target, tmp_path):
@@ -127,7 +142,7 @@ def broken(data, change):
 @pytest.mark.parametrize("write, message", [
     (lambda d: '{"schema_version": 2, "entries": [', "not valid JSON: .* line 1, column"),
     (lambda d: "[1, 2]", 'no "schema_version"'),
-    (lambda d: broken(d, lambda x: x.update(schema_version=1)), "schema version 1; this cook2ltl reads version 2"),
+    (lambda d: broken(d, lambda x: x.update(schema_version=1)), "schema version 1; this cook2ltl reads versions 2 to"),
     (lambda d: broken(d, lambda x: x.update(schema_version="2")), "schema version '2'"),
     (lambda d: broken(d, lambda x: x.update(entries={})), '"entries" must be a list'),
     (lambda d: broken(d, lambda x: x["entries"].append(7)), "entry 4 is not a JSON object"),
@@ -144,6 +159,9 @@ def broken(data, change):
     (lambda d: broken(d, lambda x: x["entries"][0]["history"].reverse()), "must go up in version numbers"),
     (lambda d: broken(d, lambda x: x["entries"][0]["history"][1].update(version=True)),
      'version 2: "version" must be a whole number'),
+    (lambda d: broken(d, lambda x: x["entries"][0]["reviews"][0].update(version=7)),
+     'review 1: "version" 7 is not in the entry\'s history'),
+    (lambda d: broken(d, lambda x: x["entries"][0]["reviews"][0].update(reviewer="")), '"reviewer" is empty'),
 ])
 def test_a_bad_file_is_refused_whole_with_a_clear_message(source, target, tmp_path, write, message):
     data = good_export(tmp_path, source)
@@ -172,11 +190,11 @@ def test_a_failure_half_way_through_an_import_writes_nothing(source, target, tmp
     before = dump(target)
     calls = []
 
-    def failing_insert(entry, history):
+    def failing_insert(entry, history, reviews):
         if calls:
             raise sqlite3.OperationalError("disk I/O error")
         calls.append(entry)
-        return Library.insert(target, entry, history)
+        return Library.insert(target, entry, history, reviews)
 
     monkeypatch.setattr(target, "insert", failing_insert)
     with pytest.raises(sqlite3.OperationalError):

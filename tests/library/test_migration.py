@@ -41,7 +41,7 @@ def test_a_version_1_library_migrates_in_place_with_every_entry_kept(tmp_path):
         (1, V1_ROWS[0]["body"], "qwen", V1_ROWS[0]["created"], "learnt")]
     library.close()
     conn = sqlite3.connect(tmp_path / "old.sqlite")
-    assert conn.execute("PRAGMA user_version").fetchone()[0] == SCHEMA_VERSION == 2
+    assert conn.execute("PRAGMA user_version").fetchone()[0] == SCHEMA_VERSION == 3
     conn.close()
 
 
@@ -61,4 +61,25 @@ def test_migrating_twice_is_a_no_op(tmp_path):
     Library(path).close()
     library = Library(path)
     assert len(library.entries()) == 3 and len(library.history(1)) == 1
+    library.close()
+
+
+def test_a_version_2_library_gets_a_review_log_from_its_last_reviews(tmp_path):
+    path = tmp_path / "v2.sqlite"
+    conn = sqlite3.connect(path)
+    db = Database(conn)
+    conn.execute("BEGIN")
+    for migration in MIGRATIONS[:2]:
+        migration(db)
+    conn.execute("PRAGMA user_version = 2")
+    db["actions"].insert_all(V1_ROWS)
+    conn.execute("UPDATE actions SET reviewed_by = 'ann', reviewed_at = '2026-02-01T00:00:00+00:00' "
+                 "WHERE status = 'approved'")
+    conn.execute("COMMIT")
+    conn.close()
+    library = Library(path)
+    assert [(r.version, r.status, r.reviewer, r.at) for r in library.reviews(1)] == [
+        (1, "approved", "ann", "2026-02-01T00:00:00+00:00")]
+    assert library.reviews(2) == () and library.reviews(3) == ()
+    assert [e.verb for e in library.search("pot")] == ["boil"]  # rows added after migration 2 are indexed
     library.close()

@@ -231,3 +231,24 @@ def test_two_writers_at_once_wait_for_each_other_and_lose_nothing(library, tmp_p
     assert failures == []
     assert [v.version for v in library.history(entry.id)] == list(range(1, 32))
     assert len(library.live("recipe")) == 3 and len(library.entries()) == 31
+
+
+def test_every_review_is_logged_with_the_version_it_concerned(library):
+    entry = add(library)
+    library.set_status(entry.id, Status.APPROVED, by="ann")
+    library.edit(entry.id, "stir($what)", "bob")  # the approval was of version 1: the entry is unreviewed again
+    assert library.get(entry.id).reviewed_by is None
+    library.set_status(entry.id, Status.REJECTED, by="cara")
+    fresh = add(library, body="shake($what)")
+    add(library, body="whisk($what)", replacing=fresh.id)
+    assert [(r.version, r.status, r.reviewer) for r in library.reviews(entry.id)] == [
+        (1, "approved", "ann"), (2, "rejected", "cara")]
+    assert [(r.status, r.reviewer) for r in library.reviews(fresh.id)] == [("rejected", "cook2ltl")]
+    assert all(recent(r.at) for r in library.reviews(entry.id))
+
+
+def test_a_refused_review_is_not_logged(library):
+    entry = add(library, validation="failed")
+    with pytest.raises(UserError):
+        library.set_status(entry.id, Status.APPROVED, by="ann")
+    assert library.reviews(entry.id) == ()

@@ -183,7 +183,7 @@ def _kitchen_check(entry, body, primitive_set, verbs):
 
 @library_app.command("history")
 def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
-    """Every body the entry had, who wrote it and when; `undo` brings the one before back."""
+    """Every body the entry had, who wrote it and when, and who approved or rejected which version."""
     store = _open(library)
     entry = store.get(entry_id)
     table = Table("v", "at", "by", "check", "note", "body", title=f"entry {entry_id} {escape(entry.action)}",
@@ -192,7 +192,10 @@ def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> N
         table.add_row(str(version.version), version.at[:16].replace("T", " "), escape(version.author),
                       f"[{CHECK_STYLE[version.validation]}]{version.validation}[/]", escape(version.note),
                       escape(version.body))
-    Console().print(table)
+    console = Console(highlight=False)
+    console.print(table)
+    for review in store.reviews(entry_id):
+        console.print(f"version {review.version} {_status(review.status)} by {escape(review.reviewer)} at {review.at}")
 
 
 @library_app.command("undo")

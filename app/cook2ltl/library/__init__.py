@@ -1,5 +1,5 @@
 """Stage 4 of Algorithm 1: the action library 𝔸, cached reductions reused across recipes and runs."""
 
-from cook2ltl.library.store import SCHEMA_VERSION, Library, LibraryEntry, Status, Version, reviewer
+from cook2ltl.library.store import SCHEMA_VERSION, Library, LibraryEntry, Review, Status, Version, reviewer
 
-__all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Status", "Version", "reviewer"]
+__all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer"]

@@ -4,10 +4,13 @@
      "signature": ["what"], "body": "…", "status": "approved", "model": "…", "prompt_hash": "…",
      "created": "…", "validation": "passed", "problems": [], "reviewed_by": "ann", "reviewed_at": "…",
      "example": {"$what": "egg"}, "history": [{"version": 1, "body": "…", "validation": "passed",
-     "problems": [], "author": "…", "at": "…", "note": "learnt", "restores": null}, …]}, …]}
+     "problems": [], "author": "…", "at": "…", "note": "learnt", "restores": null}, …],
+     "reviews": [{"version": 1, "status": "approved", "reviewer": "ann", "at": "…"}, …]}, …]}
+
+Files of schema version 2 (before the review log) are read too, their entries without "reviews".
 
 Import compares each entry with this library's entries for the same action (primitive set, verb, signature):
-- none here: added with its status, review and history, plus one version saying who imported it;
+- none here: added with its status, versions and reviews, plus one version saying who imported it;
 - the same body here (or, for an entry the file rejects, already rejected here): unchanged;
 - an approved entry here with another body: a conflict, never overwritten;
 - a pending entry here with another body: a conflict, unless `replace_pending`, which adds the file's body
@@ -30,11 +33,21 @@ from pathlib import Path
 from cook2ltl.errors import UserError
 from cook2ltl.library.schema import SCHEMA_VERSION, VALIDATIONS
 from cook2ltl.library.store import Library, LibraryEntry, Status
-from cook2ltl.library.versions import Version, now
+from cook2ltl.library.versions import Review, Version, now
 from cook2ltl.reduce.body import read_body
 
 ADDED, UNCHANGED, REPLACED, CONFLICT = "added", "unchanged", "replaced", "conflict"
+READABLE = range(2, SCHEMA_VERSION + 1)  # export files this cook2ltl reads
 HINT = "export a library with `cook2ltl library export FILE` to see the format."
+
+
+@dataclass(frozen=True)
+class Exported:
+    """One entry of an export file, with every version and review."""
+
+    entry: LibraryEntry
+    history: tuple[Version, ...]
+    reviews: tuple[Review, ...]
 
 
 @dataclass(frozen=True)
@@ -47,7 +60,8 @@ class ImportReport:
 
 def export_library(library: Library, path: Path) -> int:
     """Write every entry with its history; returns how many. The file appears whole or not at all."""
-    entries = [_record(entry, library.history(entry.id)) for entry in library.entries()]
+    entries = [_record(Exported(entry, library.history(entry.id), library.reviews(entry.id)))
+               for entry in library.entries()]
     text = json.dumps({"schema_version": SCHEMA_VERSION, "exported": now(), "entries": entries},
                       indent=2, ensure_ascii=False)
     temporary = None
@@ -71,12 +85,13 @@ def import_library(library: Library, path: Path, by: str, replace_pending: bool 
     report: dict[str, list[str]] = {ADDED: [], UNCHANGED: [], REPLACED: [], CONFLICT: []}
     note = f"imported from {path.name}"
     with library.transaction():
-        for entry, history in records:
+        for record in records:
+            entry = record.entry
             label = f"{entry.primitives} {entry.action}"
             here = known.setdefault(_key(entry), [])
             outcome, local, reason = _outcome(entry, here, replace_pending)
             if outcome == ADDED:
-                here.append(_insert(library, entry, history, by, note))
+                here.append(_insert(library, record, by, note))
             elif outcome == REPLACED:
                 here[here.index(local)] = library.edit(local.id, entry.body, by, entry.validation, entry.problems,
                                                        note)
@@ -110,13 +125,14 @@ def _outcome(entry: LibraryEntry, here: list[LibraryEntry],
     return REPLACED, live, ""
 
 
-def _insert(library: Library, entry: LibraryEntry, history: tuple[Version, ...], by: str, note: str) -> LibraryEntry:
+def _insert(library: Library, record: Exported, by: str, note: str) -> LibraryEntry:
     """The entry as the file has it, plus one version that says who imported it from where."""
-    stamp = Version(0, history[-1].version + 1, entry.body, entry.validation, entry.problems, by, now(), note)
-    return library.insert(entry, (*history, stamp))
+    entry = record.entry
+    stamp = Version(0, record.history[-1].version + 1, entry.body, entry.validation, entry.problems, by, now(), note)
+    return library.insert(entry, (*record.history, stamp), record.reviews)
 
 
-def read_export(path: Path) -> list[tuple[LibraryEntry, tuple[Version, ...]]]:
+def read_export(path: Path) -> list[Exported]:
     """The entries of an export file, each checked field by field; any fault is a UserError naming it."""
     try:
         text = path.read_text(encoding="utf-8")
@@ -132,16 +148,17 @@ def read_export(path: Path) -> list[tuple[LibraryEntry, tuple[Version, ...]]]:
                         HINT) from error
     if not isinstance(data, dict) or "schema_version" not in data:
         raise UserError(f"{path} is not a library export: it has no \"schema_version\".", HINT)
-    if data["schema_version"] != SCHEMA_VERSION:
-        raise UserError(f"{path} has schema version {data['schema_version']!r}; this cook2ltl reads version "
-                        f"{SCHEMA_VERSION}.", "export it again with this cook2ltl, or upgrade cook2ltl.")
+    version = data["schema_version"]
+    if isinstance(version, bool) or version not in READABLE:
+        raise UserError(f"{path} has schema version {version!r}; this cook2ltl reads versions "
+                        f"{READABLE[0]} to {READABLE[-1]}.", "export it again with this cook2ltl, or upgrade cook2ltl.")
     entries = data.get("entries")
     if not isinstance(entries, list):
         raise UserError(f"{path}: \"entries\" must be a list of entries.", HINT)
     return [_read_entry(raw, f"{path}: entry {number}") for number, raw in enumerate(entries, start=1)]
 
 
-def _read_entry(raw, where: str) -> tuple[LibraryEntry, tuple[Version, ...]]:
+def _read_entry(raw, where: str) -> Exported:
     fields = _Fields(raw, where)
     signature = fields.words("signature")
     body = fields.body("body")
@@ -160,7 +177,17 @@ def _read_entry(raw, where: str) -> tuple[LibraryEntry, tuple[Version, ...]]:
         reviewed_by=fields.get("reviewed_by", str, optional=True),
         reviewed_at=fields.time("reviewed_at", optional=True), example=fields.example(), version=numbers[-1],
     )
-    return entry, versions
+    reviews = tuple(_read_review(item, f"{where}, review {n}", numbers)
+                    for n, item in enumerate(fields.get("reviews", list, optional=True) or (), start=1))
+    return Exported(entry, versions, reviews)
+
+
+def _read_review(raw, where: str, numbers: list[int]) -> Review:
+    fields = _Fields(raw, where)
+    version = fields.get("version", int)
+    if version not in numbers:
+        raise UserError(f"{where}: \"version\" {version} is not in the entry's history.", HINT)
+    return Review(0, version, fields.choice("status", tuple(Status)), fields.text("reviewer"), fields.time("at"))
 
 
 def _read_version(raw, where: str) -> Version:
@@ -234,14 +261,17 @@ class _Fields:
 _KINDS = {str: "a string", int: "a whole number", list: "a list", dict: "an object"}
 
 
-def _record(entry: LibraryEntry, history: tuple[Version, ...]) -> dict:
+def _record(record: Exported) -> dict:
+    entry = record.entry
     return {
         "primitives": entry.primitives, "verb": entry.verb, "signature": list(entry.signature), "body": entry.body,
         "status": entry.status.value, "model": entry.model, "prompt_hash": entry.prompt_hash,
         "created": entry.created, "validation": entry.validation, "problems": list(entry.problems),
         "reviewed_by": entry.reviewed_by, "reviewed_at": entry.reviewed_at, "example": dict(entry.example),
         "history": [{"version": v.version, "body": v.body, "validation": v.validation, "problems": list(v.problems),
-                     "author": v.author, "at": v.at, "note": v.note, "restores": v.restores} for v in history],
+                     "author": v.author, "at": v.at, "note": v.note, "restores": v.restores} for v in record.history],
+        "reviews": [{"version": r.version, "status": r.status, "reviewer": r.reviewer, "at": r.at}
+                    for r in record.reviews],
     }
 
 

@@ -14,6 +14,7 @@ from cook2ltl.errors import UserError
 
 TABLE = "actions"
 VERSIONS = "versions"
+REVIEWS = "reviews"
 VALIDATIONS = ("passed", "failed", "unchecked")  # the kitchen check of a body; unchecked: never run
 
 
@@ -65,7 +66,23 @@ def _review_versions_and_search(db: Database) -> None:
     db[TABLE].enable_fts(["verb", "body"], create_triggers=True, tokenize="porter")
 
 
-MIGRATIONS = (_create_actions, _review_versions_and_search)
+def _review_log(db: Database) -> None:
+    """Every approval and rejection, not only the last: who reviewed which version of an entry, and when."""
+    statuses = "'pending', 'approved', 'rejected'"
+    db.conn.execute(f"""
+        CREATE TABLE {REVIEWS} (
+            entry_id INTEGER NOT NULL REFERENCES {TABLE} (id),
+            version INTEGER NOT NULL,
+            status TEXT NOT NULL CHECK (status IN ({statuses})),
+            reviewer TEXT NOT NULL,
+            at TEXT NOT NULL
+        )""")
+    db.conn.execute(f"CREATE INDEX reviews_of_entry ON {REVIEWS} (entry_id)")
+    db.conn.execute(f"INSERT INTO {REVIEWS} (entry_id, version, status, reviewer, at) "
+                    f"SELECT id, version, status, reviewed_by, reviewed_at FROM {TABLE} WHERE reviewed_by IS NOT NULL")
+
+
+MIGRATIONS = (_create_actions, _review_versions_and_search, _review_log)
 SCHEMA_VERSION = len(MIGRATIONS)
 
 

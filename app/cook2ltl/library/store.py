@@ -3,10 +3,11 @@
 One row per learnt action: the primitive set it is written in, the verb, its signature (the categories
 it fills), the body with `$what`-style placeholders, a review status, the kitchen check of the body and
 where it came from. At most one row per (primitive set, verb, signature) is live (not rejected); every
-body an entry ever had is kept in `versions`. A model's reduction is stored pending and never approved by
-the program: a person approves it, and that approval wins over any later reduction. The schema and its
-migrations are in `schema`. Each thread gets its own connection (sqlite3 refuses to share one), WAL lets a
-reader and a writer work side by side, and every write is one transaction.
+body an entry ever had is kept in `versions`, every approval and rejection in `reviews`. A model's
+reduction is stored pending and never approved by the program: a person approves it, and that approval
+wins over any later reduction. The schema and its migrations are in `schema`. Each thread gets its own
+connection (sqlite3 refuses to share one), WAL lets a reader and a writer work side by side, and every
+write is one transaction.
 """
 
 from __future__ import annotations
@@ -27,9 +28,9 @@ from sqlite_utils import Database
 from cook2ltl.errors import UserError
 from cook2ltl.library import versions
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
-from cook2ltl.library.versions import Version, checked, now
+from cook2ltl.library.versions import Review, Version, checked, now
 
-__all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Status", "Version", "reviewer"]
+__all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer"]
 REPLACER = "cook2ltl"  # who rejects a pending entry that a new reduction replaces
 
 
@@ -104,6 +105,11 @@ class Library:
         """Every body the entry had, oldest first; the last is the current one."""
         self._row(entry_id)
         return versions.history(self._db(), entry_id)
+
+    def reviews(self, entry_id: int) -> tuple[Review, ...]:
+        """Every approval and rejection of the entry (and return to pending), oldest first."""
+        self._row(entry_id)
+        return versions.reviews(self._db(), entry_id)
 
     def search(self, text: str) -> tuple[LibraryEntry, ...]:
         """Entries whose verb or body match an FTS5 query (words, "a phrase", pick*, boil OR fry), best first."""
@@ -184,8 +190,8 @@ class Library:
                               f"undo: back to version {target.version}", restores=target.version)
         return self.get(entry_id)
 
-    def insert(self, entry: LibraryEntry, history: Sequence[Version]) -> LibraryEntry:
-        """Store an entry as it is, status, review and every version included (an import); its id is new."""
+    def insert(self, entry: LibraryEntry, history: Sequence[Version], reviews: Sequence[Review] = ()) -> LibraryEntry:
+        """Store an entry as it is, status, every version and review included (an import); its id is new."""
         db = self._db()
         with self._writing():
             try:
@@ -194,6 +200,8 @@ class Library:
                 raise self._taken(entry) from error
             for version in history:
                 versions.record(db, replace(version, entry_id=new_id))
+            for review in reviews:
+                versions.record_review(db, replace(review, entry_id=new_id))
         return self.get(new_id)
 
     def close(self) -> None:
@@ -231,11 +239,13 @@ class Library:
         return row
 
     def _set_status(self, entry_id: int, status: Status, by: str) -> None:
+        db, at = self._db(), now()
         try:
-            self._db().conn.execute(f"UPDATE {TABLE} SET status = ?, reviewed_by = ?, reviewed_at = ? WHERE id = ?",
-                                    [status.value, by, now(), entry_id])
+            db.conn.execute(f"UPDATE {TABLE} SET status = ?, reviewed_by = ?, reviewed_at = ? WHERE id = ?",
+                            [status.value, by, at, entry_id])
         except sqlite3.IntegrityError as error:
             raise self._taken(self.get(entry_id)) from error
+        versions.record_review(db, Review(entry_id, self.get(entry_id).version, status.value, by, at))
 
     def _new_version(self, row: dict, body: str, by: str, validation: str, problems: tuple[str, ...], note: str,
                      restores: int | None = None) -> None:

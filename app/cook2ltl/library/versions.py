@@ -1,4 +1,5 @@
-"""Every body a library entry ever had: the `versions` table, read for history and written by edit and undo."""
+"""Every body a library entry ever had (`versions`, written by add, edit and undo) and every review of it
+(`reviews`, written by each status change): an entry's history."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ from datetime import datetime, timezone
 
 from sqlite_utils import Database
 
-from cook2ltl.library.schema import VALIDATIONS, VERSIONS
+from cook2ltl.library.schema import REVIEWS, VALIDATIONS, VERSIONS
 
 
 @dataclass(frozen=True)
@@ -22,6 +23,15 @@ class Version:
     at: str
     note: str
     restores: int | None = None  # undo: the version whose body this one brings back
+
+
+@dataclass(frozen=True)
+class Review:
+    entry_id: int
+    version: int  # the version that was approved or rejected
+    status: str
+    reviewer: str
+    at: str
 
 
 def now() -> str:
@@ -57,3 +67,13 @@ def undo_target(versions: tuple[Version, ...]) -> Version | None:
     current = versions[-1]
     wanted = (current.restores or current.version) - 1
     return next((v for v in versions if v.version == wanted), None)
+
+
+def record_review(db: Database, review: Review) -> None:
+    db.conn.execute(f"INSERT INTO {REVIEWS} (entry_id, version, status, reviewer, at) VALUES (?, ?, ?, ?, ?)",
+                    [review.entry_id, review.version, review.status, review.reviewer, review.at])
+
+
+def reviews(db: Database, entry_id: int) -> tuple[Review, ...]:
+    rows = db[REVIEWS].rows_where("entry_id = ?", [entry_id], order_by="rowid")
+    return tuple(Review(row["entry_id"], row["version"], row["status"], row["reviewer"], row["at"]) for row in rows)
