@@ -21,8 +21,10 @@ SPANS = {
     "Boil the potato.": [("VERB", "Boil"), ("WHAT", "the potato")],
     "Refrigerate the apple.": [("VERB", "Refrigerate"), ("WHAT", "the apple")],
 }
+# A first plan the kitchen refuses (the pot is put down before anything holds it), for the repair.
+BOIL_UNHELD = "put(egg, pot)\nturn_on(stovetop)"
 ANSWERS = {
-    "boil": "pick_up(egg)\nput(egg, pot)\nput(pot, stovetop)\nturn_on(stovetop)\nwait(egg == boiled)",
+    "boil": "pick_up(egg)\nput(egg, pot)\nturn_on(stovetop)\nwait(egg == boiled)",
     "refrigerate": "open(fridge)\npick_up(apple)\nput(apple, fridge)\nclose(fridge)",
 }
 
@@ -61,12 +63,18 @@ def services(sandbox, model) -> Services:
 
         return start_embedded(scene)
 
+    def validator(primitives):
+        from cook2ltl.reduce.validation import KitchenValidator
+
+        return KitchenValidator(primitives)
+
     return Services(
         make_spans=Counting(lambda: ScriptedSpans(SPANS)),
         make_dependencies=Counting(ScriptedDependencies),
         make_model=Counting(lambda name: model),
         library_path=sandbox / "library.sqlite",
         start_kitchen=Counting(kitchen),
+        make_validator=Counting(validator),
         model_names=(model.name,),
     )
 

@@ -7,7 +7,7 @@ import json
 import threading
 
 import pytest
-from textual.widgets import Button, Input, TextArea
+from textual.widgets import Button, Checkbox, Input, TextArea
 
 from cook2ltl.errors import UserError
 from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone, WorkStopped
@@ -17,7 +17,7 @@ from cook2ltl.ui.widgets.formulas import FormulaList
 from cook2ltl.ui.widgets.status import WorkStatus
 from cook2ltl.ui.widgets.steps_view import StepsView
 
-from .conftest import SIZE, once, rows, settle, text
+from .conftest import BOIL_UNHELD, SIZE, once, rows, settle, text
 
 pytestmark = pytest.mark.anyio
 
@@ -39,8 +39,9 @@ async def test_a_run_shows_steps_reductions_and_formulas(make_app, services, mod
         reductions = rows(screen, "#reductions-table")
         assert [row[2:4] for row in reductions] == [["boil(egg)", "new #1"], ["put(egg, bowl)", "primitive"],
                                               ["boil(potato)", "cached #1"]]
-        assert reductions[2][5].startswith("pick_up(potato) · put(potato, pot)")  # the library body instantiated
-        assert model.calls == 1
+        assert reductions[0][5] == "passed"  # the new reduction ran in the kitchen before it was cached
+        assert reductions[2][6].startswith("pick_up(potato) · put(potato, pot)")  # the library body instantiated
+        assert model.calls == 1 and services.make_validator.calls == 1
         assert "3 actions: 1 primitive, 1 cached, 1 by the model" in text(screen.query_one("#reduction-summary"))
         formulas = screen.query_one(FormulaList)
         assert "◇" in text(formulas) and "F(" not in text(formulas)
@@ -50,9 +51,31 @@ async def test_a_run_shows_steps_reductions_and_formulas(make_app, services, mod
         assert not screen.busy and not screen.query_one("#run", Button).disabled
 
 
+async def test_a_plan_the_kitchen_refuses_is_repaired_and_shown_with_its_problem(make_app, model, services):
+    from cook2ltl.library import Library
+
+    model.answers["boil"] = [BOIL_UNHELD, model.answers["boil"]]
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        screen = app.screen
+        assert rows(screen, "#reductions-table")[0][3:6] == ["new #1 +1 rep.", "0.0", "passed"]
+        screen.query_one("#results").active = "reductions"
+        screen.query_one("#reductions-table").move_cursor(row=0)
+        await pilot.pause()
+        detail = text(screen.query_one("#reduction-detail"))
+        assert "kitchen check passed" in detail and "attempt 1 (failed the check): put(egg, pot)" in detail
+        assert "validated 100%" in text(screen.query_one("#reduction-summary"))
+    store = Library(services.library_path)
+    assert (store.get(1).validation, store.get(1).body.splitlines()[0]) == ("passed", "pick_up($what)")
+    store.close()
+
+
 async def test_export_writes_json_and_text(make_app, tmp_path):
     app = make_app()
     async with app.run_test(size=SIZE) as pilot:
+        app.screen.query_one("#validate", Checkbox).value = False
         await pilot.press("ctrl+r")
         await settle(pilot)
         for name in ("out.json", "out.txt"):
@@ -117,6 +140,7 @@ async def test_cancel_stops_after_the_current_action(make_app, model):
     posted = []
     app = make_app()
     async with app.run_test(size=SIZE, message_hook=posted.append) as pilot:
+        app.screen.query_one("#validate", Checkbox).value = False
         await pilot.press("ctrl+r")
         assert entered.wait(10)
         assert app.screen.busy

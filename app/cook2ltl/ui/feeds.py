@@ -30,6 +30,7 @@ class TranslateRequest:
     primitives: str  # recipe, ai2thor, or a TOML file
     variant: str  # a pipeline.Variant value
     model: str
+    validate: bool = True  # run new reductions in the kitchen before caching them (repairing failures)
 
 
 @dataclass(frozen=True)
@@ -49,7 +50,8 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
     yield WorkProgress("loading the parsing models …")
     spans, dependencies = services.spans(), services.dependencies()
     library = services.library() if variant == Variant.AR_LIBRARY else None
-    translator = Translator(primitives, services.model(request.model), library, variant)
+    validator = services.validator(primitives) if request.validate else None
+    translator = Translator(primitives, services.model(request.model), library, variant, validator=validator)
     yield WorkProgress("parsing (the span model loads on first use) …")
     total = 0
     for event in run(request.text, spans, dependencies, translator, cancel):

@@ -16,6 +16,8 @@ if TYPE_CHECKING:
     from cook2ltl.library import Library
     from cook2ltl.parse.backends import DependencyParser, SpanExtractor
     from cook2ltl.reduce.llm import LanguageModel
+    from cook2ltl.reduce.model import PrimitiveSet
+    from cook2ltl.reduce.validation import PlanValidator
 
 
 @dataclass
@@ -25,6 +27,7 @@ class Services:
     make_model: Callable[[str], LanguageModel]
     library_path: Path
     start_kitchen: Callable[[str], Kitchen]  # a started Controller (anything with step/reset/last_event/stop)
+    make_validator: Callable[[PrimitiveSet], PlanValidator]  # the kitchen check of new reductions
     model_names: tuple[str, ...] = (DEFAULT_MODEL,)
     kitchen_lock: threading.Lock = field(default_factory=threading.Lock)  # one rollout drives the kitchen at a time
     _built: dict[str, Any] = field(default_factory=dict)
@@ -50,6 +53,10 @@ class Services:
 
         return self._once("library", lambda: Library(self.library_path))
 
+    def validator(self, primitives: PrimitiveSet) -> PlanValidator:
+        """One validator per primitive set (each starts its own kitchen at its first plan)."""
+        return self._once(f"validator {primitives.name}", lambda: self.make_validator(primitives))
+
     def kitchen(self, scene: str) -> Kitchen:
         """The app's one kitchen, started on first use (a rollout resets it to its scene); hold kitchen_lock."""
         return self._once("kitchen", lambda: self.start_kitchen(scene))
@@ -57,8 +64,11 @@ class Services:
     def close(self) -> None:
         with self._lock:
             library, kitchen = self._built.pop("library", None), self._built.pop("kitchen", None)
+            validators = [self._built.pop(key) for key in list(self._built) if key.startswith("validator ")]
         if library is not None:
             library.close()
+        for validator in validators:
+            validator.close()
         if kitchen is not None:
             with self.kitchen_lock:
                 kitchen.stop()
@@ -71,7 +81,8 @@ class Services:
 
 
 def production_services() -> Services:
-    """GLiNER, spaCy, llama.cpp, the user's library and the embedded kitchen; nothing is loaded yet."""
+    """GLiNER, spaCy, llama.cpp, the user's library, the embedded kitchen and the kitchen check; nothing is
+    loaded yet."""
     from cook2ltl import paths
 
     def spans():
@@ -95,7 +106,12 @@ def production_services() -> Services:
 
         return start_kitchen(scene, "embedded")
 
-    return Services(spans, dependencies, model, paths.library_file(), kitchen, _language_models())
+    def validator(primitives):
+        from cook2ltl.reduce.validation import KitchenValidator
+
+        return KitchenValidator(primitives)
+
+    return Services(spans, dependencies, model, paths.library_file(), kitchen, validator, _language_models())
 
 
 def _language_models() -> tuple[str, ...]:

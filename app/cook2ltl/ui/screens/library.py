@@ -10,6 +10,7 @@ from __future__ import annotations
 import threading
 from typing import TYPE_CHECKING
 
+from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -28,7 +29,9 @@ from cook2ltl.ui.widgets.status import WorkStatus
 if TYPE_CHECKING:
     from cook2ltl.library import Library, LibraryEntry
 
-COLUMNS = ("#", "status", "kitchen", "action", "primitives", "v", "learnt by", "reviewed by")
+# (name, width): Textual content cells are not measured by the table, so theirs are fixed.
+COLUMNS = (("#", None), ("status", 8), ("kitchen", 9), ("action", None), ("primitives", None), ("v", None),
+           ("learnt by", None), ("reviewed by", None))
 SHOWN = (("all entries", ""), ("pending review", "pending"), ("approved", "approved"), ("rejected", "rejected"),
          ("failed the kitchen check", "failed"))
 
@@ -39,9 +42,9 @@ class LibraryScreen(WorkScreen):
         Binding("a", "approve", "Approve", id="library.approve"),
         Binding("r", "reject", "Reject", id="library.reject"),
         Binding("e", "edit", "Edit", id="library.edit"),
-        Binding("u", "undo", "Undo edit", id="library.undo"),
+        Binding("u", "undo", "Undo", id="library.undo"),
         Binding("slash", "search", "Search", id="library.search"),
-        Binding("ctrl+r", "reload", "Reload", id="library.reload"),
+        Binding("ctrl+r", "reload", "Reload", show=False, id="library.reload"),
     ]
     PALETTE = (
         ("Library: approve the entry", "Mark the selected reduction as reviewed and good", "approve"),
@@ -71,8 +74,8 @@ class LibraryScreen(WorkScreen):
 
     def on_mount(self) -> None:
         table = self.query_one("#entries", DataTable)
-        for name in COLUMNS:
-            table.add_column(name, key=name)
+        for name, width in COLUMNS:
+            table.add_column(name, key=name, width=width)
 
     def on_screen_resume(self) -> None:
         self.action_reload()  # a translation may have added entries meanwhile
@@ -125,8 +128,8 @@ class LibraryScreen(WorkScreen):
         table.clear()
         for entry in shown:
             table.add_row(str(entry.id), status_content(entry.status.value), check_content(entry.validation),
-                          entry.action, entry.primitives, str(entry.version), entry.model, entry.reviewed_by or "",
-                          key=str(entry.id))
+                          Text(entry.action), Text(entry.primitives), str(entry.version), Text(entry.model),
+                          Text(entry.reviewed_by or ""), key=str(entry.id))
         self.query_one("#library-count", Label).update(f"{len(shown)} shown · {self.app.services.library_path.name}")
         ids = [entry.id for entry in shown]
         if select in ids:

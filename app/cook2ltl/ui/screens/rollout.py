@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import threading
 
+from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -21,6 +22,8 @@ from cook2ltl.ui.widgets.progress_view import FormulaProgress, verdict_content
 from cook2ltl.ui.widgets.status import WorkStatus
 
 DEFAULT_SCENE = "FloorPlan1"
+# (name, width): Textual content cells are not measured by the table, so theirs are fixed.
+LOG_COLUMNS = (("#", None), ("", 1), ("action", None), ("verdict", 16), ("holds after · or why refused", None))
 FORMULA = "formula"  # the target typed in the formula field
 
 
@@ -34,8 +37,9 @@ class RolloutScreen(WorkScreen):
         yield Header()
         with Horizontal(id="rollout-options", classes="options"):
             yield Select(self._targets(), value=self._targets()[0][1], allow_blank=False, id="target")
-            yield Checkbox("reference plan (no model)", id="reference")
-            yield Select([("the task's kitchen", ""), *((name, name) for name in scene_names())], value="",
+            yield Checkbox("reference plan", id="reference",
+                           tooltip="Run the task's hand-written plan instead of planning it (no model needed).")
+            yield Select([("task's kitchen", ""), *((name, name) for name in scene_names())], value="",
                          allow_blank=False, id="scene")
             yield Button("Run", variant="primary", id="run-rollout")
         yield Input(placeholder="or an LTL formula over the ai2thor primitives, e.g. "
@@ -50,7 +54,9 @@ class RolloutScreen(WorkScreen):
         yield Footer()
 
     def on_mount(self) -> None:
-        self.query_one("#log", DataTable).add_columns("#", "action", "now holds", "verdict")
+        log = self.query_one("#log", DataTable)
+        for name, width in LOG_COLUMNS:
+            log.add_column(name, key=name, width=width)
         self.query_one("#objects", DataTable).add_columns("object", "where", "state")
 
     def on_screen_resume(self) -> None:
@@ -67,7 +73,7 @@ class RolloutScreen(WorkScreen):
         targets = [(f"task {t.id}: {t.instruction}", f"task:{t.id}") for t in load_tasks()]
         translation = self.app.translation
         if translation is not None:
-            targets.append((f"recipe: all {len(translation.steps)} steps ({translation.primitives})", "recipe"))
+            targets.append((f"recipe: every step ({len(translation.steps)})", "recipe"))
             targets += [(f"recipe step {s.step.index + 1}: {s.step.sentence.text}", f"recipe:{i}")
                         for i, s in enumerate(translation.steps)]
         targets.append(("the formula typed below", FORMULA))
@@ -154,18 +160,20 @@ class RolloutScreen(WorkScreen):
         step = message.step
         log = self.query_one("#log", DataTable)
         facts = ", ".join(sorted(atom.text for atom in step.facts))
-        log.add_row(str(step.index), Content(f"✓ {step.attempt.atom.text}"), facts,
-                    verdict_content(step.verdict.value))
+        log.add_row(str(step.index), Content("✓").stylize("$text-success"), Text(step.attempt.atom.text),
+                    verdict_content(step.verdict.value), Text(facts))
         log.move_cursor(row=log.row_count - 1)
         objects = self.query_one("#objects", DataTable)
         objects.clear()
         for state in message.objects:
-            objects.add_row(state.name, state.where, state.state)
+            objects.add_row(Text(state.name), Text(state.where), Text(state.state))
         self.query_one(FormulaProgress).step(step)
 
     def on_rollout_refused(self, message: RolloutRefused) -> None:
         log = self.query_one("#log", DataTable)
-        log.add_row("", Content(f"✗ {message.attempt.atom.text}").stylize("$text-error"), message.attempt.error, "")
+        attempt = message.attempt
+        log.add_row("", Content("✗").stylize("$text-error"), Text(attempt.atom.text), Content("refused"),
+                    Text(attempt.error))
         log.move_cursor(row=log.row_count - 1)
 
     def on_rollout_done(self, message: RolloutDone) -> None:
@@ -174,6 +182,6 @@ class RolloutScreen(WorkScreen):
         self.query_one(WorkStatus).show(f"{outcome}: {message.trial.rollout.verdict.value.replace('_', ' ')}")
 
 
-def _short(label: str, width: int = 60) -> str:
+def _short(label: str, width: int = 46) -> str:
     """One line in the target list, however long the recipe step."""
     return label if len(label) <= width else label[: width - 1] + "…"

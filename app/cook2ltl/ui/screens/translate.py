@@ -10,7 +10,9 @@ from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
-from textual.widgets import Button, Footer, Header, Select, Static, TabbedContent, TabPane, TextArea
+from textual.widgets import (
+    Button, Checkbox, DataTable, Footer, Header, Select, Static, TabbedContent, TabPane, TextArea,
+)
 
 from cook2ltl.errors import UserError
 from cook2ltl.ui.feeds import TranslateRequest, translation_feed
@@ -18,13 +20,12 @@ from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, Tr
 from cook2ltl.ui.screens.base import WorkScreen
 from cook2ltl.ui.screens.dialogs import PathDialog
 from cook2ltl.ui.widgets.formulas import FormulaList
-from cook2ltl.ui.widgets.reductions import ReductionsTable, summary
+from cook2ltl.ui.widgets.reductions import ReductionsTable, result_detail, summary
 from cook2ltl.ui.widgets.status import WorkStatus
 from cook2ltl.ui.widgets.steps_view import StepsView
 
 PRIMITIVE_SETS = (("recipe primitives", "recipe"), ("AI2-THOR primitives", "ai2thor"))
-VARIANTS = (("AR+𝔸: library, then model", "AR+A"), ("AR: model for non-primitives", "AR"),
-            ("AR*: model for every action", "AR*"))
+VARIANTS = (("AR+𝔸 (library)", "AR+A"), ("AR (no library)", "AR"), ("AR* (all by model)", "AR*"))
 
 
 class TranslateScreen(WorkScreen):
@@ -45,10 +46,16 @@ class TranslateScreen(WorkScreen):
     def compose(self) -> ComposeResult:
         yield Header()
         with Horizontal(id="translate-options", classes="options"):
-            yield Select(PRIMITIVE_SETS, value="recipe", allow_blank=False, id="primitives")
-            yield Select(VARIANTS, value="AR+A", allow_blank=False, id="variant")
+            yield Select(PRIMITIVE_SETS, value="recipe", allow_blank=False, id="primitives",
+                         tooltip="The robot's primitive actions: the paper's recipe set, or AI2-THOR's (rollouts).")
+            yield Select(VARIANTS, value="AR+A", allow_blank=False, id="variant",
+                         tooltip="The paper's ablation: AR+𝔸 reuses and grows the action library; AR passes "
+                                 "primitives through; AR* asks the model for every action.")
             models = self.app.services.model_names
             yield Select([(name, name) for name in models], value=self.app.model_name, allow_blank=False, id="model")
+            yield Checkbox("kitchen check", True, id="validate",
+                           tooltip="Run each new reduction in the THOR kitchen before caching it; a failing plan "
+                                   "goes back to the model with its problems (2 repairs).")
             yield Button("Run", variant="primary", id="run")
             yield Button("Open…", id="open")
         with Horizontal(id="translate-body"):
@@ -62,6 +69,7 @@ class TranslateScreen(WorkScreen):
                 with TabPane("Reductions", id="reductions"):
                     with Vertical():
                         yield ReductionsTable(id="reductions-table")
+                        yield Static("", id="reduction-detail")
                         yield Static("", id="reduction-summary")
                 with TabPane("Formulas", id="formulas"):
                     with VerticalScroll():
@@ -80,6 +88,8 @@ class TranslateScreen(WorkScreen):
     def on_select_changed(self, event: Select.Changed) -> None:
         if event.select.id == "model":
             self.app.model_name = event.value
+        elif event.select.id == "variant":  # as on the command line: checked by default where entries are cached
+            self.query_one("#validate", Checkbox).value = event.value == "AR+A"
 
     def action_run(self) -> None:
         text = self.query_one("#recipe", TextArea).text
@@ -87,10 +97,12 @@ class TranslateScreen(WorkScreen):
             self.notify("Paste a recipe or open a file first.", severity="warning")
             return
         request = TranslateRequest(text, self.query_one("#primitives", Select).value,
-                                   self.query_one("#variant", Select).value, self.query_one("#model", Select).value)
+                                   self.query_one("#variant", Select).value, self.query_one("#model", Select).value,
+                                   self.query_one("#validate", Checkbox).value)
         self.query_one(StepsView).update("parsing …")
         self.query_one(ReductionsTable).clear()
         self.query_one("#reduction-summary", Static).update("")
+        self.query_one("#reduction-detail", Static).update("")
         self.query_one(FormulaList).clear()
         self.query_one("#run", Button).disabled = True
         self.translate(request, self.begin("starting …"))
@@ -108,7 +120,16 @@ class TranslateScreen(WorkScreen):
         self.query_one(ReductionsTable).show_pending(message.parsed)
 
     def on_action_reduced(self, message: ActionReduced) -> None:
-        self.query_one(ReductionsTable).show_result(message.event.done, message.event.result)
+        table = self.query_one(ReductionsTable)
+        table.show_result(message.event.done, message.event.result)
+        self._show_reduction()
+
+    def on_data_table_row_highlighted(self, event: DataTable.RowHighlighted) -> None:
+        if event.data_table.id == "reductions-table":
+            self._show_reduction()
+
+    def _show_reduction(self) -> None:
+        self.query_one("#reduction-detail", Static).update(result_detail(self.query_one(ReductionsTable).highlighted()))
 
     def on_step_translated(self, message: StepTranslated) -> None:
         self.query_one(FormulaList).add_step(message.result)
@@ -116,7 +137,7 @@ class TranslateScreen(WorkScreen):
     def on_translation_done(self, message: TranslationDone) -> None:
         translation = message.translation
         self.query_one(FormulaList).finish(translation.formula)
-        self.query_one("#reduction-summary", Static).update(summary(translation.stats))
+        self.query_one("#reduction-summary", Static).update(summary(translation))
         self.query_one(WorkStatus).show(f"done in {translation.stats.seconds:.1f} s")
 
     def action_toggle_syntax(self) -> None:

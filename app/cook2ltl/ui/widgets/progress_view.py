@@ -27,7 +27,9 @@ def marked(formula: Formula, met: frozenset[Atom]) -> Content:
     text = to_unicode(formula)
     content = Content(text)
     for atom in met:
-        pattern = rf"(?<![\w(]){re.escape(to_unicode(atom))}(?![\w(])"
+        # Not part of a longer name; an atom without arguments is not an argument of another atom either.
+        inside = "" if atom.args else r"(?<!\w\()(?<!, )"
+        pattern = rf"(?<!\w){inside}{re.escape(to_unicode(atom))}(?![\w(])"
         for match in re.finditer(pattern, text):
             content = content.stylize(MET_STYLE, match.start(), match.end())
     return content

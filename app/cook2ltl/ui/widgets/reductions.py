@@ -1,57 +1,72 @@
 """The reductions of a translation as a table, one row per action in the pipeline's order: pending until
-reduced, then primitive, cached (found in the library) or new (written by the model now), with its plan."""
+reduced, then primitive, cached (found in the library) or new (written by the model now, with its time and
+its kitchen check), with its plan; and the chosen row in full below it."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from rich.text import Text
 from textual.content import Content
 from textual.widgets import DataTable
 
+from cook2ltl.ui.widgets.entry_detail import check_content
+
 if TYPE_CHECKING:
     from cook2ltl.domain import ParsedRecipe
-    from cook2ltl.pipeline import ActionResult, Stats
+    from cook2ltl.pipeline import ActionResult, Stats, Translation
 
-COLUMNS = ("#", "step", "action", "reduction", "LLM s", "plan")  # the plan last: it is the long one
+# (name, width): Textual content cells are not measured by the table, so theirs are fixed.
+COLUMNS = (("#", None), ("step", None), ("action", None), ("reduction", 14), ("LLM s", None), ("kitchen", 9),
+           ("plan", None))
 
 
 class ReductionsTable(DataTable):
+    def __init__(self, **kwargs) -> None:
+        super().__init__(cursor_type="row", **kwargs)
+        self.results: dict[str, ActionResult] = {}
+
     def on_mount(self) -> None:
-        for name in COLUMNS:
-            self.add_column(name, key=name)
-        self.cursor_type = "row"
+        for name, width in COLUMNS:
+            self.add_column(name, key=name, width=width)
 
     def show_pending(self, parsed: ParsedRecipe) -> None:
         """One row per action, in the order the pipeline reduces them."""
         from cook2ltl.reduce.action import actions_of
 
         self.clear()
+        self.results = {}
         number = 0
         for step in parsed.steps:
             for frame in step.frames:
                 for action in actions_of(frame):
                     number += 1
-                    self.add_row(str(number), str(step.index + 1), action.text(), _muted("pending"), "", "",
-                                 key=str(number))
+                    self.add_row(str(number), str(step.index + 1), Text(action.text()), _muted("pending"), "", "",
+                                 Text(""), key=str(number))
         self._mark_working(1)
 
     def show_result(self, number: int, result: ActionResult) -> None:
         key = str(number)
         if key not in self.rows:
             return
+        self.results[key] = result
         reduction = result.reduction
         plan = " · ".join(call.text() for call in (result.plan or reduction.body))
-        if reduction.dropped:
-            plan += f"  (✗ {len(reduction.dropped)} dropped)"
-        seconds = f"{reduction.usage.seconds:.1f}" if reduction.source.value == "llm" else ""
+        seconds = sum(r.usage.seconds for r in (*result.attempts, reduction)) if reduction.source.value == "llm" else None
         self.update_cell(key, "reduction", reduction_label(result))
-        self.update_cell(key, "LLM s", seconds)
-        self.update_cell(key, "plan", plan, update_width=True)
+        self.update_cell(key, "LLM s", f"{seconds:.1f}" if seconds is not None else "", update_width=True)
+        self.update_cell(key, "kitchen", check_content(result.validation.status) if result.validation else "")
+        self.update_cell(key, "plan", Text(plan), update_width=True)
         self._mark_working(number + 1)
+
+    def highlighted(self) -> ActionResult | None:
+        if not self.row_count:
+            return None
+        return self.results.get(self.coordinate_to_cell_key(self.cursor_coordinate).row_key.value)
 
     def _mark_working(self, number: int) -> None:
         if str(number) in self.rows:
-            self.update_cell(str(number), "reduction", Content("reducing …").stylize("$text-accent"), update_width=True)
+            self.update_cell(str(number), "reduction", Content("reducing …").stylize("$text-accent"))
 
 
 def reduction_label(result: ActionResult) -> Content:
@@ -63,13 +78,34 @@ def reduction_label(result: ActionResult) -> Content:
         return _muted("primitive")
     if reduction.source.value == "library":
         return Content(f"cached{entry}").stylize("$text-success")
-    return Content(f"new{entry}").stylize("$text-warning")
+    repairs = f" +{len(result.attempts)} rep." if result.attempts else ""
+    return Content(f"new{entry}{repairs}").stylize("$text-warning")
 
 
-def summary(stats: Stats) -> str:
+def result_detail(result: ActionResult | None) -> Content:
+    """Everything about one reduction: the plan line by line, dropped lines, the kitchen check, repairs."""
+    if result is None:
+        return Content("")
+    reduction = result.reduction
+    lines = [Content(reduction.action.text()).stylize("bold") + Content(f" · {reduction.source.value}")]
+    lines += [Content(f"  {call.text()}") for call in result.plan or reduction.body]
+    lines += [Content(f"  ✗ {line} (not admissible, dropped)").stylize("$text-error") for line in reduction.dropped]
+    check = result.validation
+    if check is not None:
+        lines.append(Content("kitchen check ") + check_content(check.status) + Content(f" in {check.scene or '—'}"))
+        lines += [Content(f"  ! {message}").stylize("$text-error") for message in check.messages()]
+    for number, attempt in enumerate(result.attempts, start=1):
+        lines.append(_muted(f"attempt {number} (failed the check): {' · '.join(c.text() for c in attempt.body)}"))
+    return Content("\n").join(lines)
+
+
+def summary(translation: Translation) -> str:
+    from cook2ltl.cli.translate_command import rates_line
+
+    stats: Stats = translation.stats
     return (f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} cached, "
             f"{stats.llm_calls} by the model ({stats.llm_seconds:.1f} s LLM time, {stats.new_entries} new library "
-            f"entries pending review); {stats.seconds:.1f} s in all")
+            f"entries pending review); {stats.seconds:.1f} s in all\n{rates_line(translation)}")
 
 
 def _muted(text: str) -> Content:

@@ -8,7 +8,7 @@ from textual.content import Content
 from textual.widgets import Static
 
 if TYPE_CHECKING:
-    from cook2ltl.domain import ParsedRecipe, Step
+    from cook2ltl.domain import Frame, ParsedRecipe, Step
 
 # Theme variables, so every theme colours the six categories of the paper's Sec. IV-C.
 LABEL_STYLE = {
@@ -24,7 +24,8 @@ LINK_WORD = {"and": " then ", "or": " or "}
 
 def legend() -> Content:
     parts = [Content(label.lower()).stylize(style) for label, style in LABEL_STYLE.items()]
-    return Content("categories: ").stylize("$text-muted") + Content("  ").join(parts)
+    return (Content("categories: ").stylize("$text-muted") + Content("  ").join(parts)
+            + Content("   * an object inferred from context").stylize("$text-muted"))
 
 
 def step_content(step: Step) -> Content:
@@ -33,15 +34,25 @@ def step_content(step: Step) -> Content:
     for span in step.spans:
         sentence = sentence.stylize(LABEL_STYLE[span.label.value], span.start - start, span.end - start)
     text = Content(f"{step.index + 1:>3}  ").stylize("$text-muted") + sentence
-    frames = [Content(frame.signature()) for frame in step.frames]
+    frames = [frame_content(frame) for frame in step.frames]
     if frames:
         joined = frames[0]
         for link, frame in zip(step.links, frames[1:]):
             joined += Content(LINK_WORD[link.value]).stylize("$text-muted") + frame
-        text += Content("\n     ") + joined.stylize("$text-muted")
+        text += Content("\n     ") + joined
     else:
         text += Content("\n     no action found").stylize("$text-warning")
     return text
+
+
+def frame_content(frame: Frame) -> Content:
+    """verb(what, where, …) with each argument in its category's style; * marks one zero anaphora inferred."""
+    from cook2ltl.domain import ARGUMENT_LABELS
+
+    arguments = [Content(argument.span.text + ("*" if argument.inferred else "")).stylize(LABEL_STYLE[label.value])
+                 for label in ARGUMENT_LABELS for argument in frame.arguments(label)]
+    call = Content(frame.name).stylize(LABEL_STYLE["VERB"]) + Content("(") + Content(", ").join(arguments) + Content(")")
+    return Content("not ").stylize("bold $text-error") + call if frame.negated else call
 
 
 class StepsView(Static):

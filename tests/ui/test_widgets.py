@@ -1,0 +1,36 @@
+"""The pieces of the screens that draw core records, without a running app."""
+
+from __future__ import annotations
+
+from cook2ltl.ltl import parse
+from cook2ltl.ltl.ast import Atom
+from cook2ltl.ui.feeds import object_states
+from cook2ltl.ui.widgets.progress_view import MET_STYLE, marked
+
+
+def marked_texts(formula: str, met: set[Atom]) -> list[str]:
+    content = marked(parse(formula), frozenset(met))
+    return sorted(content.plain[span.start:span.end] for span in content.spans if span.style == MET_STYLE)
+
+
+def test_every_occurrence_of_a_met_atom_is_marked_and_nothing_else():
+    formula = "F(open(fridge) & F(pick_up(apple) & F(close(fridge) & F open(fridge))))"
+    assert marked_texts(formula, {Atom("open", ("fridge",)), Atom("pick_up", ("apple",))}) == [
+        "open(fridge)", "open(fridge)", "pick_up(apple)"]
+
+
+def test_an_atom_without_arguments_is_not_marked_inside_another_atom():
+    assert marked_texts("F(fridge & F open(fridge))", {Atom("fridge")}) == ["fridge"]
+    assert marked_texts("wait U hot(potato)", {Atom("wait")}) == ["wait"]
+
+
+def test_object_states_in_the_order_first_touched_and_pieces_that_are_gone():
+    objects = [
+        {"objectId": "Fridge|1", "objectType": "Fridge", "openable": True, "isOpen": False, "temperature": "Cold"},
+        {"objectId": "Apple|2", "objectType": "Apple", "parentReceptacles": ["Fridge|1"], "isSliced": True},
+        {"objectId": "Mug|3", "isPickedUp": True, "isFilledWithLiquid": True, "fillLiquid": "coffee"},
+    ]
+    states = object_states(objects, ["Apple|2", "Fridge|1", "Mug|3", "Bread|4"])
+    assert [(s.name, s.where, s.state) for s in states] == [
+        ("Apple", "Fridge", "sliced"), ("Fridge", "", "closed, cold"), ("Mug", "in hand", "filled with coffee"),
+        ("Bread", "", "gone (sliced or broken into pieces)")]
