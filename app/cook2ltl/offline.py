@@ -18,6 +18,7 @@ QUIET_VARIABLES = {"TRANSFORMERS_VERBOSITY": "error", "HF_HUB_DISABLE_PROGRESS_B
 NO_NETWORK_ENV = "COOK2LTL_NO_NETWORK"  # "1": refuse every non-local connection (tests set it for subprocesses)
 LOCAL_NAMES = {"localhost", "localhost.localdomain", "ip6-localhost", "ip6-loopback"}
 
+as_given: dict[str, str | None] = {}  # the user's own values of OFFLINE_VARIABLES, before enforce() set them
 blocked_hosts: list[str] = []  # every refused host, so a test fails even if a library swallowed the error
 
 
@@ -27,6 +28,7 @@ class NetworkBlocked(ConnectionError):
 
 def enforce() -> None:
     for name, value in OFFLINE_VARIABLES.items():
+        as_given.setdefault(name, os.environ.get(name))
         os.environ[name] = value
     for name, value in QUIET_VARIABLES.items():
         os.environ.setdefault(name, value)
