@@ -213,3 +213,16 @@ def dump(library) -> list[str]:
     lines = list(conn.iterdump())
     conn.close()
     return lines
+
+
+@pytest.mark.parametrize("text, message", [
+    ("[" * 100_000 + "]" * 100_000, "nests too deeply"),
+    ('{"schema_version": 1' + "0" * 5000 + ', "entries": []}', "integer string conversion"),
+    ('{"schema_version": 3, "entries": [{"verb": "bo\\udcffil"}]}', "not Unicode .*lone surrogate"),
+])
+def test_json_that_python_reads_but_cannot_use_is_a_clear_error(target, tmp_path, text, message):
+    path = tmp_path / "hostile.json"
+    path.write_text(text)
+    with pytest.raises(UserError, match=message):
+        import_library(target, path, by="cara")
+    assert target.entries() == ()

@@ -143,9 +143,17 @@ def read_export(path: Path) -> list[Exported]:
                         "give the path of an export file.") from error
     try:
         data = json.loads(text)
+        json.dumps(data, ensure_ascii=False).encode("utf-8")  # a \udcff escape is JSON but not storable text
     except json.JSONDecodeError as error:
         raise UserError(f"{path} is not valid JSON: {error.msg} at line {error.lineno}, column {error.colno}.",
                         HINT) from error
+    except UnicodeEncodeError as error:
+        raise UserError(f"{path} is not a library export: it has text that is not Unicode "
+                        f"({error.object[error.start:error.end]!r}, a lone surrogate).", HINT) from error
+    except RecursionError as error:
+        raise UserError(f"{path} is not a library export: its JSON nests too deeply.", HINT) from error
+    except ValueError as error:  # an integer of thousands of digits
+        raise UserError(f"{path} is not a library export: {error}.", HINT) from error
     if not isinstance(data, dict) or "schema_version" not in data:
         raise UserError(f"{path} is not a library export: it has no \"schema_version\".", HINT)
     version = data["schema_version"]
