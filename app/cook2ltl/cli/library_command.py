@@ -59,9 +59,11 @@ def list_command(library: Optional[Path] = LibraryOption,
         table.add_row(str(entry.id), entry.primitives, escape(entry.action), _status(entry.status.value),
                       f"[{CHECK_STYLE[entry.validation]}]{entry.validation}[/]", str(entry.version),
                       escape(reviewed), escape(entry.model))
-    console = Console()
-    console.print(table if table.row_count else f"no entries in {store.path}" + (
-        f" match {search!r}" if search else "") + (f" with status {status}" if status else ""))
+    if table.row_count:
+        Console().print(table)
+        return
+    wanted = (f" matching {search!r}" if search else "") + (f" with status {status}" if status else "")
+    Console(highlight=False).print(escape(f"no entries{wanted} in {store.path}"))
 
 
 @library_app.command("show")
