@@ -18,6 +18,8 @@ from __future__ import annotations
 import argparse
 import csv
 import json
+import signal
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -45,6 +47,7 @@ def main() -> None:
     parser.add_argument("--repairs", nargs="+", type=int, default=[0, 2])
     parser.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
     args = parser.parse_args()
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # a killed run still stops its kitchen
     offline.enforce()
     with RECIPES.open(encoding="utf-8") as handle:
         texts = [row["Edited text"] for row in csv.DictReader(handle)][: args.limit]

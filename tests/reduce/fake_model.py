@@ -21,16 +21,25 @@ class ScriptedModel:
 
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int, stop=None) -> Completion:
         prompt = static + dynamic
-        verb = prompt.rstrip().splitlines()[-1].removeprefix("def ").split("(")[0]
-        asked = sum(1 for earlier in self.prompts if earlier.rstrip().splitlines()[-1].startswith(f"def {verb}("))
+        verb = _last_header(prompt).removeprefix("def ").split("(")[0]
+        asked = sum(1 for earlier in self.prompts if _last_header(earlier).startswith(f"def {verb}("))
         self.prompts.append(prompt)
         self.statics.append(static)
         self.grammars.append(grammar)
         answer = self.answers.get(verb, "")
-        body = answer if isinstance(answer, str) else answer[min(asked, len(answer) - 1)]
-        text = "".join(f"    {line.strip()}\n" for line in body.strip().splitlines()) + "\n"
+        lines = [line.strip() for line in (answer if isinstance(answer, str) else answer[min(asked, len(answer) - 1)])
+                 .strip().splitlines()]
+        # A repair prompt ends with the lines kept of the failed plan: like a model, go on after them.
+        kept = [line.strip() for line in prompt.rsplit("\ndef ", 1)[-1].splitlines()[1:] if not line.strip().startswith("#")]
+        if kept and lines[: len(kept)] == kept:
+            lines = lines[len(kept):]
+        text = "".join(f"    {line}\n" for line in lines) + "\n"
         return Completion(text, Usage(prompt_tokens=len(prompt.split()), completion_tokens=len(text.split()), seconds=0.01))
 
     @property
     def calls(self) -> int:
         return len(self.prompts)
+
+
+def _last_header(prompt: str) -> str:
+    return next(line for line in reversed(prompt.splitlines()) if line.startswith("def "))

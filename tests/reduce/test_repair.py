@@ -11,6 +11,7 @@ from cook2ltl.reduce.model import Source
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
+from tests.reduce.gbnf import accepts
 from tests.reduce.kitchen_validators import validators  # noqa: F401  (a fixture)
 
 TEXT = "Microwave the potato."
@@ -40,11 +41,14 @@ def test_a_failing_plan_is_repaired_with_the_failure_in_the_prompt(validators, l
     stats = translation.stats
     assert (stats.llm_calls, stats.repair_calls, stats.checked, stats.validated, stats.repaired) == (1, 1, 1, 1, 1)
     assert model.calls == 2 and stats.prompt_tokens == sum(len(p.split()) for p in model.prompts)
-    # The failed body and its problem are shown before the header again; the static prefix stays the same.
-    assert ("def microwave(potato: what):\n    open(microwave)\n    put(potato, microwave)\n"
-            in model.prompts[1])
-    assert ("    # this plan failed: line 2 put(potato, microwave): the agent holds nothing; the plan must pick up "
-            "potato first\n\ndef microwave(potato: what):\n") in model.prompts[1]
+    # The problem under the header, then the lines before the failing one, kept; the static prefix unchanged.
+    assert model.prompts[1].endswith(
+        "def microwave(potato: what):\n    # this plan failed: line 2 put(potato, microwave): the agent holds nothing; "
+        "the plan must pick up potato first\n    open(microwave)\n")
+    # The grammar keeps the model from writing the failing line again right there.
+    assert accepts(model.grammars[1], "    pick_up(potato)\n    put(potato, microwave)\n\n")
+    assert not accepts(model.grammars[1], "    put(potato, microwave)\n\n")
+    assert accepts(model.grammars[0], "    put(potato, microwave)\n\n")
     assert model.statics[0] == model.statics[1] and "pick_up(" in model.grammars[1]
     entry = library.entries()[0]
     assert entry.body.splitlines()[1] == "pick_up($what)" and entry.validation == "passed"
@@ -122,3 +126,16 @@ def test_a_failed_entry_reused_says_so(validators, library):
     hit = translated(translator).steps[0].actions[0]
     assert hit.reduction.source == Source.LIBRARY and hit.entry_validation == "failed"
     assert hit.entry_problems[0].startswith("line 2 put(potato, microwave)")
+
+
+def test_a_goal_not_reached_at_the_end_keeps_the_plan_to_add_to_it(validators, library):
+    text = "Chill the apple until cold."
+    spans = {text: [("VERB", "Chill"), ("WHAT", "the apple"), ("TIME", "until cold")]}
+    model = ScriptedModel({"chill": ["pick_up(apple)\nput(apple, countertop)",
+                                     "pick_up(apple)\nput(apple, countertop)\nopen(fridge)\npick_up(apple)\n"
+                                     "put(apple, fridge)"]})
+    translation = translated(Translator(load_primitives("ai2thor"), model, library, validator=validators("ai2thor")),
+                             text, spans)
+    assert model.prompts[1].endswith("    pick_up(apple)\n    put(apple, countertop)\n")
+    assert "goal state not reached: apple is not cold at the end" in model.prompts[1]
+    assert translation.stats.repaired == 1 and len(translation.steps[0].actions[0].reduction.body) == 5

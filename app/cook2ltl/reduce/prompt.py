@@ -38,10 +38,13 @@ class Prompt:
 
 @dataclass(frozen=True)
 class Feedback:
-    """A plan that failed in the kitchen, and why: shown to the model before it writes the body again."""
+    """Why a plan failed in the kitchen, for the model writing it again: the problems as comments under
+    the header, then the lines before the first failing one, kept, from which the model goes on; the
+    grammar keeps it from writing `avoid`, the failing line, right there again."""
 
-    body: tuple[Call, ...]
     problems: tuple[str, ...]
+    kept: tuple[Call, ...] = ()
+    avoid: Call | None = None
 
 
 def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action: Action, comments: bool,
@@ -56,20 +59,19 @@ def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action:
         lines.append(f"objects += [{', '.join(extra)}]")
     dynamic = "\n".join(lines) + "\n\n" if lines else ""
     if feedback is not None:
-        dynamic += failed_attempt(action, feedback)
+        return Prompt(static_prefix(primitives, comments), dynamic + header(action) + repair_lines(feedback))
     return Prompt(static_prefix(primitives, comments), dynamic + header(action))
 
 
-def failed_attempt(action: Action, feedback: Feedback) -> str:
-    """The failed body under the action's header, its problems as comments after it, then a blank line:
+def repair_lines(feedback: Feedback) -> str:
+    """What follows the header in a repair prompt:
 
         def boil(egg: what):
-            put(egg, pot)
-            # this plan failed: line 1 put(egg, pot): the agent holds nothing; …
+            # this plan failed: line 2 put(egg, pot): the agent holds nothing; the plan must pick up egg first
+            open(fridge)
     """
-    lines = [INDENT + call.text() for call in feedback.body]
-    lines += [f"{INDENT}# this plan failed: {problem}" for problem in feedback.problems]
-    return header(action) + "\n".join(lines) + "\n\n"
+    lines = [f"{INDENT}# this plan failed: {problem}" for problem in feedback.problems]
+    return "".join(line + "\n" for line in lines + [INDENT + call.text() for call in feedback.kept])
 
 
 def static_prefix(primitives: PrimitiveSet, comments: bool) -> str:

@@ -34,13 +34,15 @@ class LibraryVerb:
 def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[LibraryVerb], model: LanguageModel,
                   settings: ReductionSettings, feedback: Feedback | None = None) -> Reduction:
     """Ask the model for the body of `action`; lines the grammar would not allow are dropped and kept aside.
-    With `feedback`, the prompt shows a plan that failed and why, before the header the model completes."""
+    With `feedback` (a repair), the prompt says why the last plan failed, and the body goes on from the
+    lines of it that are kept."""
     vocab = vocabulary(primitives, ((v.verb, v.signature) for v in library), action)
     prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments, feedback)
-    grammar = to_gbnf(vocab, settings.max_lines, settings.comments)
+    kept = feedback.kept if feedback is not None else ()
+    grammar = to_gbnf(vocab, settings.max_lines - len(kept), settings.comments, feedback and feedback.avoid)
     completion = model.complete(prompt.static, prompt.dynamic, grammar, settings.max_lines * TOKENS_PER_LINE, loops)
     calls, unread = read_body(completion.text)
-    calls = without_loops(calls)
+    calls = without_loops(kept + calls)
     kept = tuple(call for call in calls if admits(vocab, call))[: settings.max_lines]
     dropped = unread + tuple(call.text() for call in calls if not admits(vocab, call))
     return Reduction(action, kept, Source.LLM, completion.usage, dropped, prompt.digest)

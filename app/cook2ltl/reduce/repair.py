@@ -1,9 +1,12 @@
 """A new reduction checked in the kitchen and, while it fails, written again with the failure as feedback.
 
 The paper caches the model's first plan, and a wrong one then spoils every later use. Here each new plan
-is validated first; a failing one goes back to the model with the failed body and its problems as
-comment lines in the prompt (the grammar still on), at most `repairs` times. The last plan is kept either
-way: the caller caches it with its validation, so a plan that still fails is never taken for a good one.
+is validated first; a failing one goes back to the model, at most `repairs` times, with its problems as
+comment lines under the header and the lines before the first failing one already written; the grammar
+(still on) keeps the model from writing the failing line there again. Shown the whole failed plan, a
+greedy model copies it (measured: every repair of qwen2.5-coder-1.5b was its failed plan again). The last
+plan is kept either way: the caller caches it with its validation, so a plan that still fails is never
+taken for a good one.
 """
 
 from __future__ import annotations
@@ -51,7 +54,7 @@ def reduce_checked(action: Action, primitives: PrimitiveSet, library: Sequence[L
     current = _checked(action, reduction, expand, validator)
     failed: list[Reduction] = []
     while len(failed) < repairs and _repairable(current.validation):
-        feedback = Feedback(current.reduction.body, current.validation.messages())
+        feedback = feedback_for(current.reduction.body, current.validation, expand, settings.max_lines)
         again = _checked(action, reduce_action(action, primitives, library, model, settings, feedback),
                          expand, validator)
         if not again.plan:
@@ -59,6 +62,21 @@ def reduce_checked(action: Action, primitives: PrimitiveSet, library: Sequence[L
         failed.append(current.reduction)
         current = again
     return Checked(current.reduction, current.plan, current.validation, tuple(failed))
+
+
+def feedback_for(body: tuple[Call, ...], validation: Validation,
+                 expand: Callable[[tuple[Call, ...]], tuple[Call, ...] | None], max_lines: int) -> Feedback:
+    """Keep the body up to its first failing line and avoid that line; with only whole-plan problems (a goal
+    state not reached at the end), keep the whole body so the model adds to it."""
+    lines = [problem.line for problem in validation.problems if problem.line > 0]
+    if not lines:
+        return Feedback(validation.messages(), body if len(body) < max_lines else ())
+    first, done = min(lines), 0
+    for index, call in enumerate(body):  # plan lines count library verbs expanded; find the body line
+        done += len(expand((call,)) or (call,))
+        if done >= first:
+            return Feedback(validation.messages(), body[:index], call)
+    return Feedback(validation.messages())
 
 
 def _checked(action: Action, reduction: Reduction, expand, validator: PlanValidator | None) -> Checked:
