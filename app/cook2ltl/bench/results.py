@@ -48,7 +48,10 @@ def write(out: Path, name: str, record: dict, markdown: str) -> tuple[Path, Path
     record = {"benchmark": name, "command": command_line(), "machine": machine(), **record}
     json_path, md_path = out / f"{name}.json", out / f"{name}.md"
     _replace(json_path, json.dumps(record, indent=2, ensure_ascii=False) + "\n")
-    _replace(md_path, f"<!-- {record['command']} -->\n{markdown.rstrip()}\n")
+    where = record["machine"]
+    load = " / ".join(f"{v:.1f}" for v in where["load_average"])
+    _replace(md_path, f"<!-- {record['command']} -->\n{markdown.rstrip()}\n\n_Measured on {where['cpus']} CPUs, load "
+                      f"average {load} (1 / 5 / 15 min) when written, commit {where['commit']}, {where['at']}._\n")
     return json_path, md_path
 
 
