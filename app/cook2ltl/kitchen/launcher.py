@@ -28,6 +28,7 @@ from . import scenes
 
 THOR_EXECUTABLE_ENV = "COOK2LTL_THOR_EXECUTABLE"  # path to a THOR player binary
 THOR_PLATFORM_ENV = "COOK2LTL_THOR_PLATFORM"  # Linux64 or CloudRendering, for that binary
+KITCHEN_PARENT_ENV = "COOK2LTL_KITCHEN_PARENT"  # the pid that launched the embedded kitchen; it ends with it
 PLATFORMS = ("Linux64", "CloudRendering")
 _RELEASE = re.compile(r"^thor-(Linux64|CloudRendering)-([0-9a-f]{40})$")
 _POISON = bytes([2, 0, 0, 0, 0])  # an ACTION header: a field the Controller never accepts, so it fails at once
@@ -84,6 +85,9 @@ def start_embedded(
 ):
     """A Controller driving the embedded kitchen (no Unity, no display needed)."""
     scenes.canonical_scene(scene)  # fail fast on a name the kitchen does not have
+    # The Controller copies os.environ into the player's environment: this is how the player learns who
+    # launched it, even if that process is killed before the player has started (see run_player).
+    os.environ[KITCHEN_PARENT_ENV] = str(os.getpid())
     Controller = _controller_class()
     controller = Controller(
         local_executable_path=str(embedded_executable()),
@@ -190,7 +194,8 @@ def embedded_executable() -> Path:
         "#!/bin/sh\n"
         "# Written by cook2ltl.kitchen.launcher: runs the embedded THOR-compatible kitchen.\n"
         f"PYTHONPATH={shlex.quote(str(app_dir))}${{PYTHONPATH:+:$PYTHONPATH}} "
-        f"exec {shlex.quote(sys.executable)} -m cook2ltl.kitchen.player \"$@\"\n"
+        f"exec {shlex.quote(sys.executable)} -c 'from cook2ltl.kitchen.launcher import run_player; run_player()' "
+        '"$@"\n'
     )
     folder = _cache_dir()
     path = folder / f"kitchen-player-{hashlib.sha256(script.encode()).hexdigest()[:12]}"
@@ -202,6 +207,16 @@ def embedded_executable() -> Path:
         os.chmod(tmp, 0o755)
         os.replace(tmp, path)  # atomic: concurrent launches never see half a script
     return path
+
+
+def run_player() -> None:
+    """The embedded kitchen's entry point: the player, ended as soon as the process that launched it is gone,
+    including one killed while the player was still starting (its parent is then already someone else)."""
+    from . import player
+
+    launcher = int(os.environ.get(KITCHEN_PARENT_ENV) or os.getppid())
+    threading.Thread(target=player.exit_with_parent, args=(launcher,), daemon=True).start()
+    sys.exit(player.main())
 
 
 def _cache_dir() -> Path:
