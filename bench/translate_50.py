@@ -46,6 +46,7 @@ def main() -> None:
     parser.add_argument("--validate", action="store_true", help="AR+A with the kitchen check, once per --repairs")
     parser.add_argument("--repairs", nargs="+", type=int, default=[0, 2])
     parser.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
+    parser.add_argument("--threads", type=int, help="llama.cpp threads (default: one per core); 1 on a shared machine")
     args = parser.parse_args()
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # a killed run still stops its kitchen
     offline.enforce()
@@ -56,6 +57,7 @@ def main() -> None:
     parsed = [parse_recipe(text, spans, dependencies) for text in texts]
     print(f"{len(parsed)} recipes parsed in {time.perf_counter() - started:.0f} s", flush=True)
     model, primitives = load_model(args.model), load_primitives("recipe")
+    model.threads = args.threads or model.threads
     if args.validate:
         validation_runs(parsed, model, primitives, args.repairs, args.out)
     else:

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from cook2ltl.errors import UserError
-from cook2ltl.reduce.model import TIMER, Action, Call, PrimitiveSet
+from cook2ltl.reduce.model import Action, Call, PrimitiveSet
 
 MAX_WAITS = 3
 # Primitive name → what it does in the kitchen; names the ai2thor executor runs map to themselves.
@@ -119,7 +119,3 @@ class KitchenValidator:
 
     def __exit__(self, *exc) -> None:
         self.close()
-
-
-def is_timer(call: Call) -> bool:
-    return call.is_wait and call.args[0] == TIMER
