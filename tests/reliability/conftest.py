@@ -1,4 +1,16 @@
+import pytest
+
+from tests.models_required import require_models
 from tests.reliability.hostile import TRIED
+
+
+@pytest.fixture(scope="session")
+def real_parsers():
+    from cook2ltl.settings import Settings
+    from cook2ltl.stack import dependency_parser, span_extractor
+
+    require_models("gliner-cook2ltl", "spacy-sm")
+    return span_extractor(Settings()), dependency_parser()
 
 
 def pytest_terminal_summary(terminalreporter):
