@@ -18,7 +18,8 @@ def test_bench_smoke_writes_every_result(tmp_path):
     require_models("smollm2-135m", "gliner-cook2ltl", "spacy-sm")
     out = tmp_path / "results"
     command = [str(Path(sys.executable).with_name("cook2ltl")), "bench", "all", "--smoke", "--out", str(out)]
-    done = subprocess.run(command, capture_output=True, text=True, timeout=300, env={**os.environ, "HF_HUB_OFFLINE": "1"})
+    done = subprocess.run(command, capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "HF_HUB_OFFLINE": "1"})
     assert done.returncode == 0, done.stderr[-2000:]
     assert sorted(p.name for p in out.iterdir()) == sorted(f"{b}.{ext}" for b in BENCHMARKS for ext in ("json", "md"))
     results = {name: json.loads((out / f"{name}.json").read_text()) for name in BENCHMARKS}

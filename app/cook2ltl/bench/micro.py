@@ -145,9 +145,10 @@ def micro_markdown(r: dict) -> str:
     if "language_model" in r:
         m = r["language_model"]
         rows.append(f"| LLM reduction ({m['model']}) | {m['seconds_per_reduction']:.2f} s / reduction, "
-                    f"{m['tokens_per_second']:.0f} tokens / s ({m['completion_tokens_per_second']:.1f} completion) | first {m['first_reduction_seconds']:.1f} s "
-                    f"(with the prompt prefix); {m['prompt_tokens_per_reduction']:.0f} prompt + "
-                    f"{m['completion_tokens_per_reduction']:.0f} completion tokens; loading {m['load_seconds']:.1f} s |")
+                    f"{m['tokens_per_second']:.0f} tokens / s ({m['completion_tokens_per_second']:.1f} completion) "
+                    f"| first {m['first_reduction_seconds']:.1f} s (with the prompt prefix); "
+                    f"{m['prompt_tokens_per_reduction']:.0f} prompt + {m['completion_tokens_per_reduction']:.0f} "
+                    f"completion tokens; loading {m['load_seconds']:.1f} s |")
     if "ltl" in r:
         t = r["ltl"]
         rows.append(f"| LTL progression | {t['progress_ms_per_step_cold']['median']:.3f} ms / step cold, "

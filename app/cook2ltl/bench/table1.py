@@ -61,7 +61,8 @@ class Stage:
 
 def recipes_file() -> Path:
     """The evaluation recipes: the project's copy (tests/data), else the shared original."""
-    candidates = [paths.PROJECT_ROOT / "tests" / "data" / RECIPES_FILE, paths.shared_data_dir() / "cook2ltl" / RECIPES_FILE]
+    candidates = [paths.PROJECT_ROOT / "tests" / "data" / RECIPES_FILE,
+                  paths.shared_data_dir() / "cook2ltl" / RECIPES_FILE]
     found = next((path for path in candidates if path.is_file()), None)
     if found is None:
         raise UserError(f"The evaluation recipes ({RECIPES_FILE}) are not here: looked at "
@@ -247,7 +248,8 @@ def table1_markdown(rows: list[dict], total: int, bound: dict | None = None) -> 
             f"| {LABELS[variant]} | {model} | {runs} | {pm([r['executability'] for r in complete])} "
             f"| {pm(rates_) if rates_ else '—'} | {pm([r['llm_calls'] for r in complete], 0)}"
             + (f" (+ {pm(repairs, 0)})" if any(repairs) else "")
-            + f" | {pm([r['prompt_tokens'] for r in complete], 0)} | {pm([r['completion_tokens'] for r in complete], 0)} "
+            + f" | {pm([r['prompt_tokens'] for r in complete], 0)} "
+            f"| {pm([r['completion_tokens'] for r in complete], 0)} "
             f"| {pm([r['wall_seconds'] / 60 for r in complete])} | {paper_cell} |")
     notes = _ratios({key: rows for key, rows in complete_groups.items() if rows})
     return "\n".join(lines) + "\n" + notes + (bound_note(bound) if bound else "")
@@ -257,7 +259,8 @@ def bound_note(bound: dict) -> str:
     keys, reduced, actions = bound["distinct_keys"], bound["reduced_by_ar"], bound["actions"]
     return (f"\nThe library is keyed by verb and signature: of {actions} actions, {bound['primitive']} pass through "
             f"as primitives and {reduced} reach the library with {keys} distinct keys ({bound['distinct_verbs']} "
-            f"verbs), so AR+𝔸 needs at least {keys} calls: {keys / reduced:.2f} × AR, {keys / actions:.2f} × AR*.\n")
+            f"verbs), so AR+𝔸 needs at least {keys} calls: {keys / reduced:.2f} × AR, "
+            f"{keys / actions:.2f} × AR*.\n")
 
 
 def _ratios(groups: dict[tuple[str, str], list[dict]]) -> str:

@@ -28,8 +28,9 @@ def bench_command(
     smoke: bool = typer.Option(False, help="A tiny, fast pass over everything (1 recipe, smollm2, 1 run): "
                                            "checks the benchmarks work, measures nothing worth keeping."),
     out: Path = typer.Option(Path("bench/results"), help="Folder for the JSON and markdown results."),
-    variant: Optional[list[str]] = typer.Option(None, help="Table I variants, repeatable: AR+A, 'AR+A warm', "
-                                                           "'AR+A approved-only', 'AR+A repair', AR, AR* (default all)."),
+    variant: Optional[list[str]] = typer.Option(
+        None, help="Table I variants, repeatable: AR+A, 'AR+A warm', 'AR+A approved-only', AR, AR*, 'AR+A repair' "
+                   "(default all, in this order)."),
     recipes: Optional[int] = typer.Option(None, help="Table I on the first N of the 50 recipes only."),
     tasks: str = typer.Option("paper", help="Table II tasks: paper (the 4 of the paper), suite or all."),
 ) -> None:
