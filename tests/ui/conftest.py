@@ -103,7 +103,7 @@ async def settle(pilot) -> None:
     except WorkerFailed:
         pass
     await pilot.pause()
-
+    await pilot.pause()  # the tables lay their columns out on the refresh after the messages
 
 def text(widget) -> str:
     return str(widget.render())

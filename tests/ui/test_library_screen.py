@@ -101,6 +101,7 @@ async def test_an_edit_is_checked_as_you_type_saved_as_a_version_and_undone(make
         await pilot.press("e")
         editor = app.screen
         assert isinstance(editor, EntryEditor)
+        await settle(pilot)
         body = editor.query_one("#body", TextArea)
         body.text = "stir($where)\nfold($what)"
         await pilot.pause()
@@ -116,7 +117,37 @@ async def test_an_edit_is_checked_as_you_type_saved_as_a_version_and_undone(make
         assert edited.body == "pick_up($what)\nstir($what)" and edited.version == 2
         assert edited.status == Status.PENDING and edited.reviewed_by is None
         assert [(v.version, v.author) for v in library.history(2)] == [(1, "qwen"), (2, "tester")]
+        assert edited.validation == "unchecked"  # learnt before examples were kept: nothing to run it with
         assert "v2" in text(app.screen.query_one(EntryDetail))
         await pilot.press("u")
         await settle(pilot)
         assert library.get(2).body == "stir($what)" and library.get(2).version == 3
+
+
+async def test_save_runs_the_body_in_the_kitchen_and_a_refused_body_needs_a_second_save(make_app, library):
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f3")
+        await settle(pilot)
+        await choose(pilot, "boil")  # learnt for boil(egg): the kitchen runs the body with $what = egg
+        await pilot.press("e")
+        editor = app.screen
+        await settle(pilot)
+        editor.query_one("#body", TextArea).text = "put($what, pot)\nturn_on(stovetop)"
+        await pilot.pause()
+        await pilot.press("ctrl+s")
+        await settle(pilot)
+        assert app.screen is editor  # not saved yet: the kitchen refused a line
+        assert "line 1 put(egg, pot): the agent holds nothing" in text(editor.query_one("#problems"))
+        assert str(editor.query_one("#save", Button).label) == "Save failing body"
+        await pilot.press("ctrl+s")
+        await settle(pilot)
+        kept = library.get(1)
+        assert kept.version == 2 and kept.validation == "failed" and "holds nothing" in kept.problems[0]
+        await pilot.press("e")
+        await settle(pilot)
+        app.screen.query_one("#body", TextArea).text = "pick_up($what)\nput($what, pot)\nturn_on(stovetop)"
+        await pilot.pause()
+        await pilot.press("ctrl+s")
+        await settle(pilot)
+        assert (library.get(1).version, library.get(1).validation) == (3, "passed")

@@ -27,8 +27,14 @@ def frozen_clocks(monkeypatch):
     monkeypatch.setattr(cook2ltl.kitchen.rollout, "time", FROZEN)
 
 
+async def steady_cursor(pilot) -> None:
+    """The editor's cursor blinks: on or off would depend on the moment of the picture."""
+    pilot.app.screen.query_one("#recipe").cursor_blink = False
+
+
 def test_translate_after_a_run(snap_compare, make_app, frozen_clocks):
     async def run(pilot):
+        await steady_cursor(pilot)
         await pilot.press("ctrl+r")
         await settle(pilot)
 
@@ -37,6 +43,7 @@ def test_translate_after_a_run(snap_compare, make_app, frozen_clocks):
 
 def test_translate_reductions(snap_compare, make_app, frozen_clocks):
     async def run(pilot):
+        await steady_cursor(pilot)
         await pilot.press("ctrl+r")
         await settle(pilot)
         pilot.app.screen.query_one("#results").active = "reductions"
@@ -69,6 +76,7 @@ def test_library_with_a_failed_check_chosen(snap_compare, make_app, services):
 
 def test_rollout_of_the_translated_recipe(snap_compare, make_app, frozen_clocks):
     async def run(pilot):
+        await steady_cursor(pilot)
         pilot.app.screen.query_one("#primitives", Select).value = "ai2thor"
         await pilot.press("ctrl+r")
         await settle(pilot)
@@ -81,4 +89,8 @@ def test_rollout_of_the_translated_recipe(snap_compare, make_app, frozen_clocks)
 
 
 def test_help(snap_compare, make_app):
-    assert snap_compare(make_app(), terminal_size=SIZE, press=["f1"])
+    async def run(pilot):
+        await steady_cursor(pilot)
+        await pilot.press("f1")
+
+    assert snap_compare(make_app(), terminal_size=SIZE, run_before=run)

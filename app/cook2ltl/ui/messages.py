@@ -19,8 +19,11 @@ if TYPE_CHECKING:
     from cook2ltl.kitchen.tasks import Task
     from cook2ltl.kitchen.trial import Trial
     from cook2ltl.library import LibraryEntry, Version
+    from cook2ltl.library.recheck import Recheck
     from cook2ltl.ltl.ast import Atom, Formula
     from cook2ltl.pipeline import ActionDone, StepResult, Translation
+    from cook2ltl.reduce.model import PrimitiveSet
+    from cook2ltl.reduce.reduction import LibraryVerb
 
 
 class ScreenMessage(Message):
@@ -84,6 +87,20 @@ class EntryHistory(ScreenMessage):
     def __init__(self, entry_id: int, versions: tuple[Version, ...]) -> None:
         super().__init__()
         self.entry_id, self.versions = entry_id, versions
+
+
+class EditorReady(ScreenMessage):
+    """What the entry editor checks a body against: the primitive set (None if it cannot be read) and verbs."""
+
+    def __init__(self, primitives: PrimitiveSet | None, verbs: list[LibraryVerb], problem: str) -> None:
+        super().__init__()
+        self.primitives, self.verbs, self.problem = primitives, verbs, problem
+
+
+class KitchenChecked(ScreenMessage):
+    def __init__(self, body: str, check: Recheck) -> None:
+        super().__init__()
+        self.body, self.check = body, check
 
 
 # --- rollout ---------------------------------------------------------------------------------------------

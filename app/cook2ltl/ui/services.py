@@ -54,8 +54,9 @@ class Services:
         return self._once("library", lambda: Library(self.library_path))
 
     def validator(self, primitives: PrimitiveSet) -> PlanValidator:
-        """One validator per primitive set (each starts its own kitchen at its first plan)."""
-        return self._once(f"validator {primitives.name}", lambda: self.make_validator(primitives))
+        """One validator per primitive set (each starts its own kitchen at its first plan), shared by the
+        translations and the library editor: one plan in its kitchen at a time."""
+        return self._once(f"validator {primitives.name}", lambda: OnePlanAtATime(self.make_validator(primitives)))
 
     def kitchen(self, scene: str) -> Kitchen:
         """The app's one kitchen, started on first use (a rollout resets it to its scene); hold kitchen_lock."""
@@ -78,6 +79,22 @@ class Services:
             if key not in self._built:
                 self._built[key] = build()
             return self._built[key]
+
+
+class OnePlanAtATime:
+    """A validator several workers may call: its kitchen runs one plan at a time."""
+
+    def __init__(self, validator: PlanValidator) -> None:
+        self.validator = validator
+        self._lock = threading.Lock()
+
+    def validate(self, action, plan):
+        with self._lock:
+            return self.validator.validate(action, plan)
+
+    def close(self) -> None:
+        with self._lock:
+            self.validator.close()
 
 
 def production_services() -> Services:

@@ -22,7 +22,7 @@ from cook2ltl.errors import UserError
 from cook2ltl.ui.messages import EntryHistory, LibraryLoaded, WorkProgress
 from cook2ltl.ui.screens.base import WorkScreen
 from cook2ltl.ui.screens.dialogs import ConfirmDialog
-from cook2ltl.ui.screens.entry_editor import EntryEditor
+from cook2ltl.ui.screens.entry_editor import Edited, EntryEditor
 from cook2ltl.ui.widgets.entry_detail import EntryDetail, check_content, status_content
 from cook2ltl.ui.widgets.status import WorkStatus
 
@@ -190,19 +190,15 @@ class LibraryScreen(WorkScreen):
             self._write(f"undoing the last edit of #{entry.id}", entry.id, "undo")
 
     def action_edit(self) -> None:
-        from cook2ltl.reduce.reduction import LibraryVerb
-
         entry = self._reviewable()
         if entry is None:
             return
-        verbs = [LibraryVerb(e.verb, e.signature, e.body) for e in self.entries
-                 if e.primitives == entry.primitives and e.status.value != "rejected"]
 
-        def saved(body: str | None) -> None:
-            if body is not None and body != entry.body:
-                self._write(f"saving version {entry.version + 1} of #{entry.id}", entry.id, "edit", body)
+        def saved(edited: Edited | None) -> None:
+            if edited is not None and edited.body != entry.body:
+                self._write(f"saving version {entry.version + 1} of #{entry.id}", entry.id, "edit", edited)
 
-        self.app.push_screen(EntryEditor(entry, verbs), saved)
+        self.app.push_screen(EntryEditor(entry), saved)
 
     def _reviewable(self) -> LibraryEntry | None:
         entry = self.selected()
@@ -229,6 +225,7 @@ class LibraryScreen(WorkScreen):
         elif change == "undo":
             entry = library.undo(entry_id, by)
         else:
-            entry = library.edit(entry_id, argument, by, note="edited in the app")
+            entry = library.edit(entry_id, argument.body, by, argument.check.validation, argument.check.problems,
+                                 note="edited in the app")
         self.post_message(LibraryLoaded(library.search(query), entry_id))
         self.post_message(WorkProgress(f"#{entry.id} {entry.action}: {entry.status.value}, version {entry.version}"))
