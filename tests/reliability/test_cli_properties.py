@@ -56,7 +56,7 @@ def assert_clean(code: int, err: str) -> None:
 @given(st.one_of(st.text(max_size=80), hostile_text.filter(lambda t: len(t) < 400)))
 def test_ltl_parse_any_text(text):
     TRIED["cli ltl parse"] += 1
-    code, _, err = run_cli("ltl", "parse", text)
+    code, _, err = run_cli("ltl", "parse", "--", text)
     assert_clean(code, err)
 
 
@@ -89,4 +89,13 @@ def test_translate_any_recipe_file(fake_backends, tmp_path_factory, text):
     (folder / "recipe.txt").write_text(text, encoding="utf-8", errors="surrogatepass")
     code, _, err = run_cli("translate", str(folder / "recipe.txt"), "--library", str(folder / "library.sqlite"),
                            "--json")
+    assert_clean(code, err)
+
+
+@CLI
+@given(st.text(max_size=40), st.lists(st.text(max_size=20), max_size=4), st.booleans())
+def test_ltl_progress_any_formula_and_steps(formula, steps, as_json):
+    TRIED["cli ltl progress"] += 1
+    # "--" first: a step such as "-x" is text, not an option (a usage error is click's, not ours)
+    code, _, err = run_cli("ltl", "progress", *(["--json"] if as_json else []), "--", formula, *steps)
     assert_clean(code, err)
