@@ -33,11 +33,16 @@ class Counting:
     """A factory that counts its calls: the app must build nothing heavy before a run needs it."""
 
     def __init__(self, build) -> None:
-        self.build, self.calls = build, 0
+        self.build, self.calls, self.built = build, 0, []
 
     def __call__(self, *args):
         self.calls += 1
-        return self.build(*args)
+        self.built.append(self.build(*args))
+        return self.built[-1]
+
+    def stopped_all(self) -> bool:
+        """For kitchens: every player process it started has ended."""
+        return all(k.server is None or k.server.unity_proc.poll() is not None for k in self.built)
 
 
 @pytest.fixture

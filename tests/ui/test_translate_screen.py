@@ -88,6 +88,8 @@ async def test_export_writes_json_and_text(make_app, tmp_path):
     exported = json.loads((tmp_path / "out.json").read_text())
     assert [step["text"] for step in exported["steps"]] == ["Boil the egg.", "Put the egg in a bowl.",
                                                            "Boil the potato."]
+    assert exported["steps"][0]["actions"][0]["validation"] is None  # the kitchen check was off for this run
+    assert exported["stats"]["validated_rate"] is None
     plain = (tmp_path / "out.txt").read_text()
     assert "Boil the potato." in plain and "\x1b[" not in plain
 
@@ -125,6 +127,22 @@ async def test_a_failing_run_shows_a_dialog_not_a_traceback(make_app, services):
         await pilot.press("escape")
         assert isinstance(app.screen, TranslateScreen) and not app.screen.busy
         assert "failed" in text(app.screen.query_one(WorkStatus).query_one("#status-text"))
+
+
+async def test_an_unexpected_error_is_a_dialog_and_its_traceback_goes_to_a_log(make_app, services, sandbox):
+    def broken():
+        raise RuntimeError("the span model's tensor has the wrong shape")
+
+    services.make_spans = broken
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        assert isinstance(app.screen, ErrorDialog)
+        assert text(app.screen.query_one("#error-message")) == "RuntimeError: the span model's tensor has the wrong shape"
+        assert "ui-errors.log" in text(app.screen.query_one("#error-hint"))
+    log = (sandbox / "data" / "ui-errors.log").read_text()
+    assert "Traceback" in log and "wrong shape" in log
 
 
 async def test_cancel_stops_after_the_current_action(make_app, model):

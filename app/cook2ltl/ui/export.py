@@ -1,4 +1,5 @@
-"""A translation written to a file: JSON (the CLI's `--json` form) or the CLI's text form without colours."""
+"""A translation written to a file: JSON (the CLI's `--json` form, kitchen checks included) or the CLI's text form
+without colours."""
 
 from __future__ import annotations
 
@@ -15,13 +16,14 @@ if TYPE_CHECKING:
 def write_translation(translation: Translation, path: Path) -> None:
     from rich.console import Console
 
-    from cook2ltl.cli.translate_command import show
+    from cook2ltl.cli.translate_command import show, with_validation
     from cook2ltl.translate.serialize import translation_json
 
     try:
         with path.open("w", encoding="utf-8") as handle:
             if path.suffix == ".json":
-                json.dump(translation_json(translation), handle, ensure_ascii=False, indent=2)
+                json.dump(with_validation(translation_json(translation), translation), handle, ensure_ascii=False,
+                          indent=2)
                 handle.write("\n")
             else:
                 show(translation, Console(file=handle, width=120, no_color=True, highlight=False, soft_wrap=True))
