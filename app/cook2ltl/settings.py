@@ -54,6 +54,9 @@ def load_settings(path: Path | None = None) -> Settings:
         raw = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
         raise UserError(f"Settings file {path} is not valid TOML: {error}", "fix it or set COOK2LTL_CONFIG.") from error
+    except OSError as error:  # a folder, a file we may not read
+        raise UserError(f"Cannot read the settings file {path}: {error.strerror or error}.",
+                        "give COOK2LTL_CONFIG a readable TOML file.") from error
     ner = raw.get("ner", {})
     try:
         labels = {Label(key.upper()): str(value) for key, value in ner.get("labels", {}).items()}

@@ -88,3 +88,18 @@ def test_limits_come_from_the_settings_file(tmp_path):
         config.write_text(f"[limits]\n{bad}\n")
         with pytest.raises(UserError, match=r"\[limits\]"):
             load_settings(config)
+
+
+def test_a_settings_path_that_is_a_folder_is_a_clear_error(tmp_path):
+    with pytest.raises(UserError, match="Cannot read the settings file"):
+        load_settings(tmp_path)
+
+
+@pytest.mark.xfail(strict=True, reason="models/manifest.py load_manifest catches FileNotFoundError only: "
+                                       "COOK2LTL_MODELS_DIR naming a file gives NotADirectoryError, a traceback")
+def test_a_models_folder_that_is_a_file_is_a_clear_error(tmp_path):
+    from cook2ltl.models.manifest import load_manifest
+
+    (tmp_path / "models").write_text("not a folder")
+    with pytest.raises(UserError):
+        load_manifest(tmp_path / "models")
