@@ -171,6 +171,33 @@ async def test_cancel_stops_after_the_current_action(make_app, model):
         assert text(app.screen.query_one("#status-text")) == "stopped"
 
 
+async def test_cancel_stops_the_model_mid_plan_and_caches_nothing(make_app, model, services):
+    """The model gets the job's cancel event (LlamaModel checks it after every token and raises)."""
+    from cook2ltl.library import Library
+    from cook2ltl.reduce.llm import GenerationCancelled
+
+    entered = threading.Event()
+
+    def writing(*args, **kwargs):
+        entered.set()
+        if model.cancel.wait(10):
+            raise GenerationCancelled(f"Cancelled while {model.name} was writing a plan.")
+        raise AssertionError("never cancelled")
+
+    model.complete = writing
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        assert entered.wait(10)
+        await pilot.press("ctrl+g")
+        await settle(pilot)
+        assert not isinstance(app.screen, ErrorDialog)
+        assert text(app.screen.query_one("#status-text")) == "stopped" and not app.screen.busy
+    store = Library(services.library_path)
+    assert store.entries() == ()
+    store.close()
+
+
 async def test_an_empty_recipe_is_not_run(make_app, services):
     app = make_app(text="  ")
     async with app.run_test(size=SIZE) as pilot:

@@ -42,6 +42,20 @@ class RolloutRequest:
 
 
 def translation_feed(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
+    from cook2ltl.reduce.llm import GenerationCancelled
+
+    if not services.pipeline_lock.acquire(blocking=False):
+        yield WorkProgress("waiting for the models: a rollout is planning …")
+        services.pipeline_lock.acquire()
+    try:
+        yield from _translating(services, request, cancel)
+    except GenerationCancelled:  # stopped mid-plan: nothing of that plan was cached
+        yield WorkStopped()
+    finally:
+        services.pipeline_lock.release()
+
+
+def _translating(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
     from cook2ltl.pipeline import ActionDone, Finished, Parsed, Started, StepDone, Translator, Variant, run
     from cook2ltl.reduce.primitives import load_primitives
 
@@ -51,7 +65,7 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
     spans, dependencies = services.spans(), services.dependencies()
     library = services.library() if variant == Variant.AR_LIBRARY else None
     validator = services.validator(primitives) if request.validate else None
-    translator = Translator(primitives, services.model(request.model), library, variant, validator=validator)
+    translator = Translator(primitives, services.model(request.model, cancel), library, variant, validator=validator)
     yield WorkProgress("parsing (the span model loads on first use) …")
     total = 0
     for event in run(request.text, spans, dependencies, translator, cancel):
@@ -76,14 +90,20 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
     from cook2ltl.kitchen.rollout import ActionRefused, Started, Stepped
     from cook2ltl.kitchen.trial import TrialDone, run_trial
 
+    from cook2ltl.reduce.llm import GenerationCancelled
+
     task, plan, formula = request.task, None, request.formula
     if formula is None:
         yield WorkProgress(f"planning “{task.instruction}” with {request.model} …")
-        plan = _planner(services, request.model).plan(task.instruction)
-        formula = plan.formula
-        if cancel.is_set():
+        with services.pipeline_lock:
+            try:
+                plan = _planner(services, request.model, cancel).plan(task.instruction)
+            except GenerationCancelled:
+                plan = None
+        if plan is None or cancel.is_set():
             yield WorkStopped()
             return
+        formula = plan.formula
     yield WorkProgress(f"starting the kitchen ({request.scene}) …")
     with services.kitchen_lock:
         kitchen = services.kitchen(request.scene)
@@ -101,12 +121,12 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
                 yield RolloutDone(event.trial)
 
 
-def _planner(services: Services, model: str):
+def _planner(services: Services, model: str, cancel: threading.Event):
     from cook2ltl.kitchen.planning import PRIMITIVES, Planner
     from cook2ltl.pipeline import Translator
     from cook2ltl.reduce.primitives import load_primitives
 
-    translator = Translator(load_primitives(PRIMITIVES), services.model(model), services.library())
+    translator = Translator(load_primitives(PRIMITIVES), services.model(model, cancel), services.library())
     return Planner(translator, services.spans(), services.dependencies())
 
 

@@ -30,6 +30,9 @@ class Services:
     make_validator: Callable[[PrimitiveSet], PlanValidator]  # the kitchen check of new reductions
     model_names: tuple[str, ...] = (DEFAULT_MODEL,)
     kitchen_lock: threading.Lock = field(default_factory=threading.Lock)  # one rollout drives the kitchen at a time
+    # One run of Algorithm 1 at a time (a translation, or a rollout's planning): the models are not shared
+    # across threads.
+    pipeline_lock: threading.Lock = field(default_factory=threading.Lock)
     _built: dict[str, Any] = field(default_factory=dict)
     _lock: threading.Lock = field(default_factory=threading.Lock)
 
@@ -39,14 +42,17 @@ class Services:
     def dependencies(self) -> DependencyParser:
         return self._once("dependencies", self.make_dependencies)
 
-    def model(self, name: str) -> LanguageModel:
-        """The named model; asking for another one lets the previous one go (one LLM in memory)."""
+    def model(self, name: str, cancel: threading.Event) -> LanguageModel:
+        """The named model, stopping at once when the job's `cancel` is set (llama.cpp checks it after every
+        token); asking for another model lets the previous one go (one LLM in memory). Hold pipeline_lock."""
         with self._lock:
             if self._built.get("model name") != name:
                 self._built.pop("model", None)
                 self._built["model"] = self.make_model(name)
                 self._built["model name"] = name
-            return self._built["model"]
+            model = self._built["model"]
+        model.cancel = cancel
+        return model
 
     def library(self) -> Library:
         from cook2ltl.library import Library
