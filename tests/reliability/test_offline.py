@@ -104,3 +104,11 @@ def test_the_textual_app_sets_the_offline_variables_before_it_starts():
         "import runpy, sys\nimport textual.app\ntextual.app.App.run = lambda self, *a, **k: None\n"
         "sys.argv = ['cook2ltl.ui']\nrunpy.run_module('cook2ltl.ui', run_name='__main__')\n" + PRINT_VARIABLES)
     assert result.stdout.strip() == "['1', '1', '1']", result.stderr
+
+
+def test_the_embedded_kitchen_player_is_guarded_too():
+    result = run_python(
+        "import socket\nfrom cook2ltl.kitchen import launcher, player\n"
+        "player.main = lambda: socket.create_connection(('example.org', 80), timeout=1)\n"
+        "launcher.run_player()\n")
+    assert "refused a network connection to example.org" in result.stderr and result.returncode != 0

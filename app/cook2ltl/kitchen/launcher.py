@@ -212,8 +212,10 @@ def embedded_executable() -> Path:
 def run_player() -> None:
     """The embedded kitchen's entry point: the player, ended as soon as the process that launched it is gone,
     including one killed while the player was still starting (its parent is then already someone else)."""
+    from .. import offline
     from . import player
 
+    offline.enforce()  # the kitchen needs no network; under COOK2LTL_NO_NETWORK=1 it cannot reach one either
     launcher = int(os.environ.get(KITCHEN_PARENT_ENV) or os.getppid())
     threading.Thread(target=player.exit_with_parent, args=(launcher,), daemon=True).start()
     sys.exit(player.main())
