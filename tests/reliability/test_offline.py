@@ -112,3 +112,12 @@ def test_the_embedded_kitchen_player_is_guarded_too():
         "player.main = lambda: socket.create_connection(('example.org', 80), timeout=1)\n"
         "launcher.run_player()\n")
     assert "refused a network connection to example.org" in result.stderr and result.returncode != 0
+
+
+def test_cook2ltl_app_sets_the_offline_variables_before_the_app_starts():
+    result = run_python(
+        "import runpy, sys\nimport textual.app\ntextual.app.App.run = lambda self, *a, **k: None\n"
+        "sys.argv = ['cook2ltl', 'app']\n"
+        "try:\n    runpy.run_module('cook2ltl', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+        + PRINT_VARIABLES)
+    assert result.stdout.strip().endswith("['1', '1', '1']"), result.stderr
