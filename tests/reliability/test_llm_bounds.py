@@ -64,3 +64,12 @@ def test_cancelling_stops_generation_at_once(tiny):
 def test_within_the_limits_a_reduction_still_completes(tiny):
     reduction = reduce_action(boil(), load_primitives("recipe"), [], tiny, ReductionSettings(3))
     assert reduction.body and reduction.usage.completion_tokens <= 3 * 40
+
+
+def test_the_time_limit_comes_from_the_settings(tmp_path, monkeypatch):
+    from cook2ltl.reduce.llm import DEFAULT_TIME_LIMIT, load_model
+
+    monkeypatch.setenv("COOK2LTL_CONFIG", str(tmp_path / "config.toml"))
+    assert load_model(TINY).time_limit == DEFAULT_TIME_LIMIT
+    (tmp_path / "config.toml").write_text("[limits]\nllm_seconds = 7.5\n")
+    assert load_model(TINY).time_limit == 7.5
