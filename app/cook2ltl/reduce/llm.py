@@ -21,11 +21,12 @@ from typing import Callable, Protocol
 
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.model import Usage
+from cook2ltl.settings import Limits
 
 DEFAULT_MODEL = "qwen2.5-coder-1.5b"  # chosen by measurement: see the README's "Action reduction"
 SEED = 4242
 CONTEXT_TOKENS = 4096
-DEFAULT_TIME_LIMIT = 120.0  # seconds; the settings' [limits] llm_seconds
+DEFAULT_TIME_LIMIT = Limits.llm_seconds  # seconds; load_model takes the settings' [limits] llm_seconds
 
 
 class GenerationStopped(UserError):
