@@ -77,3 +77,52 @@ def test_kill_9_during_a_translation_loses_nothing_approved_and_leaves_no_proces
             assert store.history(entry.id)[-1].body == entry.body
     finally:
         store.close()
+
+
+def test_kill_9_during_a_large_import_leaves_all_or_nothing(tmp_path):
+    from cook2ltl.library.exchange import export_library
+
+    source = Library(tmp_path / "source.sqlite")
+    with source.transaction():
+        for number in range(3000):
+            source.add("recipe", f"verb_{number}", ("what",), "pick_up($what)\nstir($what)", "m", "h")
+    export_library(source, tmp_path / "export.json")
+    source.close()
+    library = tmp_path / "library.sqlite"
+    seeded_library(library)
+    run = subprocess.Popen([sys.executable, "-m", "cook2ltl", "library", "import", str(tmp_path / "export.json"),
+                            "--library", str(library)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    try:
+        deadline = time.monotonic() + 120
+        while not writing(library):  # inside its one transaction
+            assert run.poll() is None, f"the import ended before it could be killed: {run.stderr.read()[-2000:]}"
+            assert time.monotonic() < deadline
+        time.sleep(0.05)
+        run.send_signal(signal.SIGKILL)
+        run.wait(10)
+    finally:
+        if run.poll() is None:
+            run.kill()
+            run.wait()
+        run.stderr.close()
+    with sqlite3.connect(library) as conn:
+        assert conn.execute("PRAGMA integrity_check").fetchall() == [("ok",)]
+        count = conn.execute("SELECT count(*) FROM actions").fetchone()[0]
+    assert count in (len(APPROVED), len(APPROVED) + 3000)  # all of the import or none of it
+    store = Library(library)
+    kept = {(e.verb, e.signature): e.body for e in store.entries() if e.status == Status.APPROVED}
+    assert kept == APPROVED
+    store.close()
+
+
+def writing(path) -> bool:
+    """Whether another process holds the library's write lock."""
+    conn = sqlite3.connect(path, timeout=0, isolation_level=None)
+    try:
+        conn.execute("BEGIN IMMEDIATE")
+        conn.execute("ROLLBACK")
+        return False
+    except sqlite3.OperationalError:
+        return True
+    finally:
+        conn.close()
