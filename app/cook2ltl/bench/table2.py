@@ -3,7 +3,9 @@
 Each task of assets/tasks/ is planned from its instruction by Algorithm 1 with the ai2thor primitives and rolled
 out in its kitchen (the embedded one, through ai2thor's Controller), `runs` consecutive times, as in the paper.
 The action library starts empty (a temporary file) and is shared by every run and task, so with AR+𝔸 the first
-run of a verb asks the model and later runs reuse its plan. The model is deterministic (temperature 0, fixed
+run of a verb asks the model and later runs reuse its plan. A third column is cook2ltl's own AR+𝔸: each new
+plan is first run in the kitchen and a refused one goes back to the model with THOR's reasons, up to twice
+(`cook2ltl translate`'s default; cook2ltl.reduce.repair). The model is deterministic (temperature 0, fixed
 seed): the runs of a task agree unless the library changed in between. Success is the task's goal holding at the
 end. Seconds per rollout are planning (parse and reduction) plus execution; loading the models is counted apart.
 """
@@ -28,6 +30,9 @@ PAPER = {
     "refrigerate-apple": ((7.6, 14.6), (8, 1.56)),
 }
 TASK_SETS = ("paper", "suite", "all", "smoke")  # smoke: the first paper task only
+REPAIR = "AR+A repair"
+# Each column: the pipeline's variant and how many repairs a plan the kitchen refuses gets (None: not checked).
+COLUMNS = {"AR": (Variant.AR, None), "AR+A": (Variant.AR_LIBRARY, None), REPAIR: (Variant.AR_LIBRARY, 2)}
 
 
 def choose_tasks(which: str):
@@ -45,7 +50,7 @@ def run_task(kitchen, planner, task) -> dict:
 
     plan = planner.plan(task.instruction)
     outcome = {"plan": [c.text() for c in plan.calls], "sources": list(plan.sources),
-               "llm_calls": plan.stats.llm_calls, "plan_seconds": plan.seconds}
+               "llm_calls": plan.stats.llm_calls, "repair_calls": plan.stats.repair_calls, "plan_seconds": plan.seconds}
     try:
         trial = next(e.trial for e in run_trial(kitchen, plan.formula, task.scene, task, plan)
                      if isinstance(e, TrialDone))
@@ -58,8 +63,10 @@ def run_task(kitchen, planner, task) -> dict:
             "rollout_seconds": trial.rollout.seconds, "actions": len(trial.rollout.steps)}
 
 
-def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[[str], None]) -> dict:
-    """Every task `runs` consecutive times with one planner and one library; each run's outcome."""
+def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[[str], None],
+                 repairs: int | None = None) -> dict:
+    """Every task `runs` consecutive times with one planner and one library; each run's outcome. With
+    `repairs`, new plans are checked in the kitchen and repaired that many times at most."""
     from cook2ltl.bench.backends import parsers
     from cook2ltl.kitchen.launcher import start_embedded
     from cook2ltl.kitchen.planning import PRIMITIVES, Planner
@@ -67,16 +74,20 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
     from cook2ltl.pipeline import Translator
     from cook2ltl.reduce.llm import load_model
     from cook2ltl.reduce.primitives import load_primitives
+    from cook2ltl.reduce.validation import KitchenValidator
 
     results: dict[str, list[dict]] = {}
     started = time.perf_counter()
     backends, language_model = parsers(), load_model(model)
     language_model.complete("", "x", 'root ::= "x"', 1)  # the weights are read outside the timings
     load_seconds = time.perf_counter() - started
-    echo(f"{model}, {variant.value}, {runs} runs per task; models loaded in {load_seconds:.1f} s")
-    with tempfile.TemporaryDirectory() as folder:
+    checked = "" if repairs is None else f", kitchen check and {repairs} repairs"
+    echo(f"{model}, {variant.value}{checked}, {runs} runs per task; models loaded in {load_seconds:.1f} s")
+    primitives = load_primitives(PRIMITIVES)
+    with tempfile.TemporaryDirectory() as folder, KitchenValidator(primitives) as validator:
         library = Library(Path(folder) / "library.sqlite") if variant == Variant.AR_LIBRARY else None
-        translator = Translator(load_primitives(PRIMITIVES), language_model, library, variant)
+        translator = Translator(primitives, language_model, library, variant,
+                                validator=None if repairs is None else validator, repairs=repairs or 0)
         planner = Planner(translator, backends.spans, backends.dependencies)
         kitchen = start_embedded("FloorPlan1")
         try:
@@ -90,8 +101,8 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
             kitchen.stop()
             if library is not None:
                 library.close()
-    return {"model": model, "variant": variant.value, "runs": runs, "load_seconds": round(load_seconds, 3),
-            "tasks": results}
+    return {"model": model, "variant": variant.value, "repairs": repairs, "runs": runs,
+            "load_seconds": round(load_seconds, 3), "tasks": results}
 
 
 def summary(name: str, rows: list[dict], runs: int) -> str:
@@ -104,23 +115,28 @@ def summary(name: str, rows: list[dict], runs: int) -> str:
             f"later runs {statistics.mean(later):.2f})")
 
 
-def run_table2(model: str, runs: int, which: str, out: Path, echo: Callable[[str], None]) -> dict:
-    """AR then AR+𝔸, each from an empty library; the record and the side-by-side table."""
+def run_table2(model: str, runs: int, which: str, out: Path, echo: Callable[[str], None],
+               columns: tuple[str, ...] = tuple(COLUMNS)) -> dict:
+    """AR, AR+𝔸 and AR+𝔸 with repairs (or some of them), each from an empty library; the record and the table."""
+    unknown = set(columns) - set(COLUMNS)
+    if unknown:
+        raise UserError(f"unknown Table II variant(s) {', '.join(sorted(unknown))}",
+                        f"choose from {', '.join(COLUMNS)}.")
     tasks = choose_tasks(which)
     record = {"model": model, "runs": runs, "tasks": [t.id for t in tasks], "variants": {}}
-    for variant in (Variant.AR, Variant.AR_LIBRARY):
-        record["variants"][variant.value] = rollout_runs(model, variant, runs, tasks, echo)
+    for name, (variant, repairs) in [(name, COLUMNS[name]) for name in COLUMNS if name in columns]:
+        record["variants"][name] = rollout_runs(model, variant, runs, tasks, echo, repairs)
         write(out, "table2", record, table2_markdown(record))
     return record
 
 
 def table2_markdown(record: dict) -> str:
     variants = record["variants"]
-    lines = ["| task | AR success | AR s / rollout | AR+𝔸 success | AR+𝔸 s / rollout | paper AR: successes · s "
-             "| paper AR+𝔸: successes · s |", "|---|---|---|---|---|---|---|"]
+    lines = ["| task | AR success | AR s / rollout | AR+𝔸 success | AR+𝔸 s / rollout | AR+𝔸 with repairs: success "
+             "| s / rollout | paper AR: successes · s | paper AR+𝔸: successes · s |", "|---" * 9 + "|"]
     for task in record["tasks"]:
         cells = []
-        for variant in ("AR", "AR+A"):
+        for variant in COLUMNS:
             rows = variants.get(variant, {}).get("tasks", {}).get(task)
             cells += [f"{sum(r['success'] for r in rows)}/{len(rows)}", pm([_seconds(r) for r in rows])] if rows \
                 else ["—", "—"]
