@@ -45,6 +45,8 @@ def test_a_missing_recipe_is_a_cli_error_before_the_app_starts(sandbox, tmp_path
 
     with pytest.raises(UserError, match="No recipe file"):
         run_app(tmp_path / "missing.txt")
+    with pytest.raises(UserError, match="reads its keys from the terminal"):
+        run_app("-")
 
 
 @pytest.mark.anyio

@@ -42,7 +42,7 @@ async def test_a_task_is_planned_then_run_step_by_step_to_its_verdict(make_app, 
         progress = text(screen.query_one(FormulaProgress))
         assert "refrigerate-apple" in progress and "verdict   satisfied" in progress and "success" in progress
         assert "✓ Apple" in progress  # the goal's condition, checked on THOR object state
-        assert "success" in text(screen.query_one("#status-text"))
+        assert text(screen.query_one("#status-text")) == "success: the formula is satisfied, the task's goal holds"
     assert services.start_kitchen.stopped_all()  # the app stops its kitchen when it closes
 
 

@@ -97,5 +97,8 @@ def run_app(recipe_path: str | Path | None = None) -> None:
     if recipe_path is not None:
         from cook2ltl.cli.inputs import read_recipe
 
+        if str(recipe_path) == "-":
+            raise UserError("The app reads its keys from the terminal, not a recipe from standard input.",
+                            "give a recipe file, or paste the recipe into the app's editor.")
         text = read_recipe(str(recipe_path))
     Cook2LTLApp(production_services(), text, Path(recipe_path) if recipe_path else None).run()

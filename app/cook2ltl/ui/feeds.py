@@ -89,7 +89,6 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
 def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.Event) -> Iterator[Message]:
     from cook2ltl.kitchen.rollout import ActionRefused, Started, Stepped
     from cook2ltl.kitchen.trial import TrialDone, run_trial
-
     from cook2ltl.reduce.llm import GenerationCancelled
 
     task, plan, formula = request.task, None, request.formula

@@ -178,8 +178,10 @@ class RolloutScreen(WorkScreen):
 
     def on_rollout_done(self, message: RolloutDone) -> None:
         self.query_one(FormulaProgress).finish(message.trial)
-        outcome = "success" if message.trial.success else "failure"
-        self.query_one(WorkStatus).show(f"{outcome}: {message.trial.rollout.verdict.value.replace('_', ' ')}")
+        trial = message.trial
+        goal = "" if trial.goal is None else f", the task's goal {'holds' if trial.goal.met else 'does not hold'}"
+        verdict = trial.rollout.verdict.value.replace("_", " ")
+        self.query_one(WorkStatus).show(f"{'success' if trial.success else 'failure'}: the formula is {verdict}{goal}")
 
 
 def _short(label: str, width: int = 46) -> str:
