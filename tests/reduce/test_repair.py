@@ -45,9 +45,9 @@ def test_a_failing_plan_is_repaired_with_the_failure_in_the_prompt(validators, l
     assert model.prompts[1].endswith(
         "def microwave(potato: what):\n    # this plan failed: line 2 put(potato, microwave): the agent holds nothing; "
         "the plan must pick up potato first\n    open(microwave)\n")
-    # The grammar keeps the model from writing the failing line again right there.
+    # The grammar keeps the model from writing a put again right there.
     assert accepts(model.grammars[1], "    pick_up(potato)\n    put(potato, microwave)\n\n")
-    assert not accepts(model.grammars[1], "    put(potato, microwave)\n\n")
+    assert not accepts(model.grammars[1], "    put(potato, fridge)\n\n")
     assert accepts(model.grammars[0], "    put(potato, microwave)\n\n")
     assert model.statics[0] == model.statics[1] and "pick_up(" in model.grammars[1]
     entry = library.entries()[0]
@@ -139,3 +139,15 @@ def test_a_goal_not_reached_at_the_end_keeps_the_plan_to_add_to_it(validators, l
     assert model.prompts[1].endswith("    pick_up(apple)\n    put(apple, countertop)\n")
     assert "goal state not reached: apple is not cold at the end" in model.prompts[1]
     assert translation.stats.repaired == 1 and len(translation.steps[0].actions[0].reduction.body) == 5
+
+
+def test_repairs_at_the_same_place_avoid_every_name_that_failed_there(validators, library):
+    model = ScriptedModel({"microwave": ["open(microwave)\nturn_on(potato)", "open(microwave)\nclose(potato)",
+                                         GOOD]})
+    translation = translated(Translator(load_primitives("ai2thor"), model, library, validator=validators("ai2thor")))
+    assert translation.stats.repaired == 1 and model.calls == 3
+    assert not accepts(model.grammars[1], "    turn_on(microwave)\n\n")
+    assert accepts(model.grammars[1], "    close(microwave)\n\n")
+    assert not accepts(model.grammars[2], "    turn_on(microwave)\n\n")
+    assert not accepts(model.grammars[2], "    close(microwave)\n\n")
+    assert accepts(model.grammars[2], "    pick_up(potato)\n    turn_on(microwave)\n\n")

@@ -84,18 +84,19 @@ def _is_duration(vocab: Vocabulary, text: str) -> bool:
     return text in vocab.durations or bool(_DURATION.match(text))
 
 
-def to_gbnf(vocab: Vocabulary, max_lines: int, comments: bool, avoid: Call | None = None) -> str:
+def to_gbnf(vocab: Vocabulary, max_lines: int, comments: bool, avoid: Iterable[str] = ()) -> str:
     """One body: 1 … max_lines indented calls (each after an optional comment), then a blank line.
 
-    With `avoid`, the first line may be any call but that one: a repair must not write again the line
-    that failed where it failed (a greedy model shown its failed plan would copy it)."""
+    `avoid` are names the first line may not call: a repair must not write again, where the plan failed,
+    the kind of line that failed there (a greedy model shown its failed plan would write it again)."""
     calls = " | ".join(_shape_rule(shape) for shape in vocab.shapes)
-    other = _calls_except(vocab, avoid) if avoid is not None else None
-    comment = "comment? " if comments else ""
+    first = " | ".join(_shape_rule(shape) for shape in vocab.shapes if shape.name not in set(avoid))
+    first = first if first != calls else ""
     conditions = (['object " == " state'] if vocab.states else []) + [f'"{TIMER} == " duration']
     durations = [*(_literal(d) for d in vocab.durations), '[1-9] [0-9]{0,2} "_" (' + _choice(DURATION_UNITS) + ")"]
+    comment = "comment? " if comments else ""
     rules = [
-        f'root ::= first line{{0,{max_lines - 1}}} "\\n"' if other else f'root ::= line{{1,{max_lines}}} "\\n"',
+        f'root ::= first line{{0,{max_lines - 1}}} "\\n"' if first else f'root ::= line{{1,{max_lines}}} "\\n"',
         f'line ::= {comment}"{INDENT}" call "\\n"',
         f"call ::= {calls}",
         f"object ::= {_choice(vocab.objects)}",
@@ -107,39 +108,9 @@ def to_gbnf(vocab: Vocabulary, max_lines: int, comments: bool, avoid: Call | Non
         rules.append(f"state ::= {_choice(vocab.states)}")
     if comments:
         rules.append(f'comment ::= "{INDENT}# " [a-zA-Z0-9 ,\'-]{{1,{COMMENT_CHARACTERS}}} "\\n"')
-    if other:
-        alternatives, extra = other
-        rules += [f'first ::= {comment}"{INDENT}" first-call "\\n"', f"first-call ::= {alternatives}", *extra]
+    if first:
+        rules += [f'first ::= {comment}"{INDENT}" first-call "\\n"', f"first-call ::= {first}"]
     return "\n".join(rules) + "\n"
-
-
-def _calls_except(vocab: Vocabulary, avoid: Call) -> tuple[str, list[str]] | None:
-    """Every call but `avoid`, as alternatives and the rules they need; None when that cannot be said simply
-    (a timer wait, a library verb with a time)."""
-    shape = next((s for s in vocab.shapes if s.name == avoid.name and admits(
-        Vocabulary((s,), vocab.objects, vocab.states, vocab.durations), avoid)), None)
-    if shape is None or VALUE in shape.slots or (shape.slots == (CONDITION,) and avoid.args[0] == TIMER):
-        return None
-    others = [_shape_rule(s) for s in vocab.shapes if s != shape]
-    if shape.slots == (CONDITION,):  # wait(subject == state): another subject, or another state
-        subject, state = avoid.args
-        choices = [("not-subject", [o for o in vocab.objects if o != subject], ' " == " state'),
-                   ("not-state", [s for s in vocab.states if s != state], "")]
-        prefix = {"not-subject": "", "not-state": _literal(f"{subject} == ") + " "}
-        parts = [f"{prefix[name]}{name}{suffix}" for name, rest, suffix in choices if rest]
-        extra = [f"{name} ::= {_choice(rest)}" for name, rest, _ in choices if rest]
-        parts.append(f'"{TIMER} == " duration')
-        return " | ".join([*others, f'"{shape.name}(" ({" | ".join(parts)}) ")"']), extra
-    extra, alternatives = [], []
-    for index, arg in enumerate(avoid.args):  # the same call up to argument `index`, then another object there
-        rest = [o for o in vocab.objects if o != arg]
-        if not rest:
-            continue
-        extra.append(f"not-{index} ::= {_choice(rest)}")
-        slots = [_literal(a) for a in avoid.args[:index]] + [f"not-{index}"]
-        slots += ["object"] * (len(avoid.args) - index - 1)
-        alternatives.append(f'"{shape.name}(" ' + ' ", " '.join(slots) + ' ")"')
-    return " | ".join(others + alternatives), extra
 
 
 def _shape_rule(shape: Shape) -> str:

@@ -40,11 +40,12 @@ class Prompt:
 class Feedback:
     """Why a plan failed in the kitchen, for the model writing it again: the problems as comments under
     the header, then the lines before the first failing one, kept, from which the model goes on; the
-    grammar keeps it from writing `avoid`, the failing line, right there again."""
+    grammar keeps it from calling `avoid` (the failing line's name, `put` for a put before any pick up)
+    right there again."""
 
     problems: tuple[str, ...]
     kept: tuple[Call, ...] = ()
-    avoid: Call | None = None
+    avoid: tuple[str, ...] = ()
 
 
 def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action: Action, comments: bool,

@@ -39,7 +39,7 @@ def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[Li
     vocab = vocabulary(primitives, ((v.verb, v.signature) for v in library), action)
     prompt = build_prompt(primitives, (v.verb for v in library), action, settings.comments, feedback)
     kept = feedback.kept if feedback is not None else ()
-    grammar = to_gbnf(vocab, settings.max_lines - len(kept), settings.comments, feedback and feedback.avoid)
+    grammar = to_gbnf(vocab, settings.max_lines - len(kept), settings.comments, feedback.avoid if feedback else ())
     completion = model.complete(prompt.static, prompt.dynamic, grammar, settings.max_lines * TOKENS_PER_LINE, loops)
     calls, unread = read_body(completion.text)
     calls = without_loops(kept + calls)

@@ -3,8 +3,9 @@
 The paper caches the model's first plan, and a wrong one then spoils every later use. Here each new plan
 is validated first; a failing one goes back to the model, at most `repairs` times, with its problems as
 comment lines under the header and the lines before the first failing one already written; the grammar
-(still on) keeps the model from writing the failing line there again. Shown the whole failed plan, a
-greedy model copies it (measured: every repair of qwen2.5-coder-1.5b was its failed plan again). The last
+(still on) keeps the model from calling there what failed there (in every repair so far at that place).
+Shown the whole failed plan, a greedy model copies it (measured: every repair of qwen2.5-coder-1.5b was
+its failed plan again); forbidding only the exact failing call, it wrote the same verb with another object. The last
 plan is kept either way: the caller caches it with its validation, so a plan that still fails is never
 taken for a good one.
 """
@@ -53,8 +54,9 @@ def reduce_checked(action: Action, primitives: PrimitiveSet, library: Sequence[L
     reduction = reduce_action(action, primitives, library, model, settings)
     current = _checked(action, reduction, expand, validator)
     failed: list[Reduction] = []
+    feedback = None
     while len(failed) < repairs and _repairable(current.validation):
-        feedback = feedback_for(current.reduction.body, current.validation, expand, settings.max_lines)
+        feedback = feedback_for(current.reduction.body, current.validation, expand, settings.max_lines, feedback)
         again = _checked(action, reduce_action(action, primitives, library, model, settings, feedback),
                          expand, validator)
         if not again.plan:
@@ -65,9 +67,11 @@ def reduce_checked(action: Action, primitives: PrimitiveSet, library: Sequence[L
 
 
 def feedback_for(body: tuple[Call, ...], validation: Validation,
-                 expand: Callable[[tuple[Call, ...]], tuple[Call, ...] | None], max_lines: int) -> Feedback:
-    """Keep the body up to its first failing line and avoid that line; with only whole-plan problems (a goal
-    state not reached at the end), keep the whole body so the model adds to it."""
+                 expand: Callable[[tuple[Call, ...]], tuple[Call, ...] | None], max_lines: int,
+                 previous: Feedback | None = None) -> Feedback:
+    """Keep the body up to its first failing line and avoid that line's name there (with the names the last
+    repair avoided at the same place); with only whole-plan problems (a goal state not reached at the end),
+    keep the whole body so the model adds to it."""
     lines = [problem.line for problem in validation.problems if problem.line > 0]
     if not lines:
         return Feedback(validation.messages(), body if len(body) < max_lines else ())
@@ -75,7 +79,9 @@ def feedback_for(body: tuple[Call, ...], validation: Validation,
     for index, call in enumerate(body):  # plan lines count library verbs expanded; find the body line
         done += len(expand((call,)) or (call,))
         if done >= first:
-            return Feedback(validation.messages(), body[:index], call)
+            same_place = previous is not None and previous.kept == body[:index]
+            avoided = (*previous.avoid, call.name) if same_place else (call.name,)
+            return Feedback(validation.messages(), body[:index], tuple(dict.fromkeys(avoided)))
     return Feedback(validation.messages())
 
 
