@@ -17,6 +17,7 @@ from cook2ltl.ui.widgets.status import WorkStatus
 class WorkScreen(Screen):
     BINDINGS = [Binding("ctrl+g", "cancel", "Cancel", id="cancel")]
     PALETTE: tuple[tuple[str, str, str], ...] = ()  # (title, help, action) for the command palette
+    JOB = ""  # the worker group of the screen's jobs (started with `begin`); other workers only read
 
     busy: reactive[bool] = reactive(False, bindings=True)
 
@@ -50,11 +51,14 @@ class WorkScreen(Screen):
     def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
         if event.state not in (WorkerState.SUCCESS, WorkerState.ERROR, WorkerState.CANCELLED):
             return
-        self.busy = False
+        job = event.worker.group == self.JOB
         if event.state == WorkerState.ERROR:
-            self.query_one(WorkStatus).show("failed")
+            if job:
+                self.query_one(WorkStatus).show("failed")
             self.app.show_error(event.worker.error)
-        self.work_ended()
+        if job:
+            self.busy = False
+            self.work_ended()
 
     def work_ended(self) -> None:
         """After any job, whatever its end: re-enable what `busy` disabled."""

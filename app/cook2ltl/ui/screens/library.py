@@ -37,6 +37,7 @@ SHOWN = (("all entries", ""), ("pending review", "pending"), ("approved", "appro
 
 
 class LibraryScreen(WorkScreen):
+    JOB = "library-write"
     AUTO_FOCUS = "#entries"  # the review keys (a, r, e, u) act on the table's row
     BINDINGS = [
         Binding("a", "approve", "Approve", id="library.approve"),
@@ -213,7 +214,7 @@ class LibraryScreen(WorkScreen):
         query = self.query_one("#search", Input).value
         self.change(self.begin(f"{what} …"), entry_id, change, argument, query)
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="library-write")
+    @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
     def change(self, cancel: threading.Event, entry_id: int, change: str, argument: object, query: str) -> None:
         from cook2ltl.library import Status, reviewer
 

@@ -28,6 +28,7 @@ FORMULA = "formula"  # the target typed in the formula field
 
 
 class RolloutScreen(WorkScreen):
+    JOB = "rollout"
     BINDINGS = [Binding("ctrl+r", "run", "Run", id="rollout.run")]
     PALETTE = (("Rollout: run", "Execute the chosen task or formula in the kitchen", "run"),)
 
@@ -145,7 +146,7 @@ class RolloutScreen(WorkScreen):
         except LTLSyntaxError as error:
             raise UserError(f"Not a formula: {error}", "e.g. F(pick_up(apple) & F put(apple, fridge)).") from None
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="rollout")
+    @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
     def roll_out(self, request: RolloutRequest, cancel: threading.Event) -> None:
         for message in rollout_feed(self.app.services, request, cancel):
             self.post_message(message)

@@ -29,6 +29,7 @@ VARIANTS = (("AR+𝔸 (library)", "AR+A"), ("AR (no library)", "AR"), ("AR* (all
 
 
 class TranslateScreen(WorkScreen):
+    JOB = "translate"
     AUTO_FOCUS = "#recipe"  # ready for a paste
     BINDINGS = [
         Binding("ctrl+r", "run", "Run", id="translate.run"),
@@ -107,7 +108,7 @@ class TranslateScreen(WorkScreen):
         self.query_one("#run", Button).disabled = True
         self.translate(request, self.begin("starting …"))
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="translate")
+    @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
     def translate(self, request: TranslateRequest, cancel: threading.Event) -> None:
         for message in translation_feed(self.app.services, request, cancel):
             self.post_message(message)
