@@ -22,6 +22,7 @@ import signal
 import sys
 import tempfile
 import time
+import traceback
 from pathlib import Path
 
 from cook2ltl import offline
@@ -86,18 +87,24 @@ def validation_runs(parsed, model, primitives, repairs: list[int], out: Path) ->
     for count in repairs:
         log = out / f"validation-{model.name}-repairs{count}.jsonl"
         log.unlink(missing_ok=True)
-        translations = []
+        translations, errors = [], 0
         with tempfile.TemporaryDirectory() as folder, KitchenValidator(primitives) as validator:
             library = Library(Path(folder) / "library.sqlite")
             translator = Translator(primitives, model, library, validator=validator, repairs=count)
             for index, recipe in enumerate(parsed):
-                translations.append(_translation(recipe, translator))
+                try:
+                    translations.append(_translation(recipe, translator))
+                    record = _recipe_record(index, translations[-1])
+                except Exception:  # recorded and counted, so one bad recipe does not end an hour-long run
+                    record = {"recipe": index, "error": traceback.format_exc()}
+                    errors += 1
+                    print(record["error"], flush=True)
                 with log.open("a", encoding="utf-8") as handle:
-                    handle.write(json.dumps(_recipe_record(index, translations[-1]), ensure_ascii=False) + "\n")
+                    handle.write(json.dumps(record, ensure_ascii=False) + "\n")
                 print(f"repairs {count}: recipe {index + 1}/{len(parsed)} {_line(summary(translations, count))}",
                       flush=True)
             library.close()
-        summaries.append(summary(translations, count))
+        summaries.append({**summary(translations, count), "errors": errors})
         (out / f"validation-{model.name}.json").write_text(json.dumps(
             {"model": model.name, "primitives": primitives.name, "recipes": len(parsed), "runs": summaries},
             indent=2))

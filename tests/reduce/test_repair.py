@@ -44,7 +44,8 @@ def test_a_failing_plan_is_repaired_with_the_failure_in_the_prompt(validators, l
     # The problem under the header, then the lines before the failing one, kept; the static prefix unchanged.
     assert model.prompts[1].endswith(
         "def microwave(potato: what):\n    # this plan failed: line 2 put(potato, microwave): the agent holds nothing; "
-        "the plan must pick up potato first\n    open(microwave)\n")
+        "the plan must pick up potato first\n    # this plan failed: microwave(potato): goal state not reached: potato "
+        "is not hot at the end\n    open(microwave)\n")
     # The grammar keeps the model from writing a put again right there.
     assert accepts(model.grammars[1], "    pick_up(potato)\n    put(potato, microwave)\n\n")
     assert not accepts(model.grammars[1], "    put(potato, fridge)\n\n")
@@ -64,7 +65,8 @@ def test_a_plan_that_keeps_failing_is_cached_pending_and_failed(validators, libr
     entry = library.entries()[0]
     assert entry.status == Status.PENDING and entry.validation == "failed"
     assert entry.problems == ("line 2 put(potato, microwave): the agent holds nothing; "
-                              "the plan must pick up potato first",)
+                              "the plan must pick up potato first",
+                              "microwave(potato): goal state not reached: potato is not hot at the end")
     assert rates(translation).validated_rate == 0.0
     # Never approved by itself, and a reviewer must insist to approve it.
     with pytest.raises(UserError, match="(?i)fail"):

@@ -9,8 +9,10 @@ the run goes on, so a plan gets every problem at once.
 
 Goal states are checked where the plan or action states one the kitchen can observe: `wait(potato ==
 hot)` waits (THOR's Pass) up to `MAX_WAITS` times for the potato to be hot, and an action whose time or
-temperature is such a state (`chill(apple, until_cold)`) must leave its object in it. States the kitchen
-cannot see (boiled, golden, thick) and timers are not checked.
+temperature is such a state (`chill(apple, until_cold)`), or whose verb implies one (chop: sliced,
+microwave: hot, refrigerate: cold; `validation_run.VERB_GOALS`), must leave its first object in it, so
+`pick_up(tomato)` alone does not pass for chopping it. States the kitchen cannot see (boiled, golden,
+thick) and timers are not checked.
 
 Both shipped primitive sets run: the ai2thor set as THOR actions, and the recipe set through `MEANING`
 (cut → SliceObject, remove → PickupObject, stir / shake / taste / turn touch an object that must be

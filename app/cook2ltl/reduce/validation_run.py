@@ -17,6 +17,13 @@ from cook2ltl.reduce.model import TIMER, Action, Call
 from cook2ltl.reduce.validation import MAX_WAITS, MEANING, POUR, TOUCH, WAIT, LineProblem
 from cook2ltl.reduce.validation_scene import Frame, plan_names
 
+# Cooking verbs and the state they leave their object in, as the kitchen reports it.
+VERB_GOALS = {
+    **dict.fromkeys(("chop", "slice", "cut", "dice", "mince", "cube", "halve", "quarter"), ("sliced",)),
+    **dict.fromkeys(("heat", "warm", "microwave", "boil", "simmer", "fry", "saute", "bake", "roast", "toast",
+                     "grill", "cook", "brown", "melt"), ("hot",)),
+    **dict.fromkeys(("chill", "refrigerate", "cool", "freeze"), ("cold",)),
+}
 _OBJECT_ID = re.compile(r"\b([A-Z][A-Za-z]*)\|[+-]?[0-9.]+\|[+-]?[0-9.]+\|[+-]?[0-9.]+(?:\|[A-Za-z_0-9]+)*")
 
 
@@ -98,9 +105,10 @@ class PlanRun:
         return "" if self._holds(subject, state) else f"goal state not reached: {subject} never became {state}"
 
     def _goal(self, action: Action) -> list[LineProblem]:
-        """The state an action names for its first object (`until cold`), if the kitchen can observe it."""
+        """The state an action names (`until cold`) or its verb implies (chop: sliced) for its first object,
+        if the kitchen can observe it."""
         whats = [p.value for p in action.parameters if p.category == "what"]
-        states = [v for v in action.values if v in PREDICATES]
+        states = list(dict.fromkeys([*(v for v in action.values if v in PREDICATES), *VERB_GOALS.get(action.verb, ())]))
         if not whats or not states or not self._named_anything(whats[0]):
             return []
         return [LineProblem(0, action.text(), f"goal state not reached: {whats[0]} is not {state} at the end")
