@@ -2,6 +2,7 @@
 
     .venv/bin/python bench/translate_50.py [--model qwen2.5-coder-1.5b] [--variants AR* AR AR+A] [--limit 50]
     .venv/bin/python bench/translate_50.py --validate --repairs 0 2 [--out bench/results]
+    .venv/bin/python bench/translate_50.py --summarize bench/results/validation-*.jsonl   # a run cut short
 
 The recipes (tests/data/eval_recipes_50.csv, column "Edited text") are parsed once with the real parser;
 AR+A starts from an empty library and grows it over the 50 recipes in order, as in the paper. Which actions
@@ -48,7 +49,11 @@ def main() -> None:
     parser.add_argument("--repairs", nargs="+", type=int, default=[0, 2])
     parser.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
     parser.add_argument("--threads", type=int, help="llama.cpp threads (default: one per core); 1 on a shared machine")
+    parser.add_argument("--summarize", nargs="+", type=Path, help="only summarize these per-recipe logs")
     args = parser.parse_args()
+    if args.summarize:
+        print(_table([summary_of_log(path) for path in args.summarize]))
+        return
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # a killed run still stops its kitchen
     offline.enforce()
     with RECIPES.open(encoding="utf-8") as handle:
@@ -125,6 +130,28 @@ def summary(translations: list[Translation], repairs: int) -> dict:
         "passed_first_try": first_try, "repaired": totals["repaired"], "repair_calls": totals["repair_calls"],
         "executability": counts.executability, "llm_seconds": round(totals["llm_seconds"], 1),
         "seconds": round(totals["seconds"], 1),
+    }
+
+
+def summary_of_log(path: Path) -> dict:
+    """The summary of a run from its per-recipe log, however far it got."""
+    records = [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines()]
+    done = [r for r in records if "error" not in r]
+    reductions = [x for r in done for x in r["reductions"]]
+    total = {key: sum(r["stats"][key] for r in done) for key in done[0]["stats"]} if done else {}
+    admissible = sum(len(x["body"]) + sum(len(a) for a in x["failed_attempts"]) for x in reductions)
+    written = admissible + total.get("dropped_lines", 0)
+    validated = sum(1 for x in reductions if x["validation"] == "passed")
+    return {
+        "repairs": int(path.stem.rsplit("repairs", 1)[-1]), "recipes": len(done), "errors": len(records) - len(done),
+        "actions": total.get("actions", 0), "library_hits": total.get("library_hits", 0),
+        "new_reductions": len(reductions), "no_plan": sum(1 for x in reductions if x["validation"] is None),
+        "checked": total.get("checked", 0), "unchecked": sum(1 for x in reductions if x["validation"] == "unchecked"),
+        "validated": validated, "validated_rate": validated / len(reductions) if reductions else None,
+        "passed_first_try": sum(1 for x in reductions if x["validation"] == "passed" and not x["failed_attempts"]),
+        "repaired": total.get("repaired", 0), "repair_calls": total.get("repair_calls", 0),
+        "executability": admissible / written if written else None,
+        "llm_seconds": round(total.get("llm_seconds", 0), 1), "seconds": round(total.get("seconds", 0), 1),
     }
 
 
