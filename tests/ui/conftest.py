@@ -24,7 +24,7 @@ SPANS = {
 # A first plan the kitchen refuses (the pot is put down before anything holds it), for the repair.
 BOIL_UNHELD = "put(egg, pot)\nturn_on(stovetop)"
 ANSWERS = {
-    "boil": "pick_up(egg)\nput(egg, pot)\nturn_on(stovetop)\nwait(egg == boiled)",
+    "boil": "pick_up(pot)\nput(pot, stovetop)\npick_up(egg)\nput(egg, pot)\nturn_on(stovetop)\nwait(egg == boiled)",
     "refrigerate": "open(fridge)\npick_up(apple)\nput(apple, fridge)\nclose(fridge)",
 }
 

@@ -146,7 +146,8 @@ async def test_save_runs_the_body_in_the_kitchen_and_a_refused_body_needs_a_seco
         assert kept.version == 2 and kept.validation == "failed" and "holds nothing" in kept.problems[0]
         await pilot.press("e")
         await settle(pilot)
-        app.screen.query_one("#body", TextArea).text = "pick_up($what)\nput($what, pot)\nturn_on(stovetop)"
+        app.screen.query_one("#body", TextArea).text = ("pick_up(pot)\nput(pot, stovetop)\npick_up($what)\n"
+                                                        "put($what, pot)\nturn_on(stovetop)\nwait($what == boiled)")
         await pilot.pause()
         await pilot.press("ctrl+s")
         await settle(pilot)
