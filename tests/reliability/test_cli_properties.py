@@ -99,3 +99,28 @@ def test_ltl_progress_any_formula_and_steps(formula, steps, as_json):
     # "--" first: a step such as "-x" is text, not an option (a usage error is click's, not ours)
     code, _, err = run_cli("ltl", "progress", *(["--json"] if as_json else []), "--", formula, *steps)
     assert_clean(code, err)
+
+
+@pytest.fixture(scope="module")
+def small_library(tmp_path_factory):
+    from cook2ltl.library import Library
+
+    path = tmp_path_factory.mktemp("lib") / "library.sqlite"
+    store = Library(path)
+    store.add("recipe", "boil", ("what",), "pick_up($what)\nput($what, pot)", "m", "h")
+    store.close()
+    return str(path)
+
+
+# Ids within SQLite's 64-bit integers: larger ones are a known traceback (test_library_files.py, xfail).
+@CLI
+@given(st.sampled_from(["show", "approve", "reject", "history", "undo"]),
+       st.one_of(st.integers(-2**63, 2**63 - 1).map(str), st.text(max_size=12)), st.text(max_size=30))
+def test_library_commands_on_any_id_and_search(small_library, command, entry_id, search):
+    TRIED["cli library"] += 1
+    code, _, err = run_cli("library", command, "--library", small_library, "--", entry_id)
+    assert "Traceback" not in err
+    if "Usage:" not in err:  # a non-number id is click's own usage error
+        assert_clean(code, err)
+    code, _, err = run_cli("library", "list", "--library", small_library, "--search", search)
+    assert_clean(code, err)
