@@ -93,6 +93,8 @@ class TranslateScreen(WorkScreen):
             self.query_one("#validate", Checkbox).value = event.value == "AR+A"
 
     def action_run(self) -> None:
+        if self.busy:  # the palette can ask while a run is on
+            return
         text = self.query_one("#recipe", TextArea).text
         if not text.strip():
             self.notify("Paste a recipe or open a file first.", severity="warning")
