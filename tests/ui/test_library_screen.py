@@ -74,6 +74,7 @@ async def test_approve_reject_and_a_failed_check_needs_confirming(make_app, libr
         approved = library.get(1)
         assert approved.status == Status.APPROVED and approved.reviewed_by == "tester"
         assert rows(app.screen, "#entries")[0][1] == "approved" and rows(app.screen, "#entries")[0][7] == "tester"
+        assert "approved by tester at" in text(app.screen.query_one(EntryDetail))  # the review log, per version
         await choose(pilot, "fry")
         await pilot.press("a")
         assert isinstance(app.screen, ConfirmDialog)

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from cook2ltl.kitchen.tasks import Task
     from cook2ltl.kitchen.trial import Trial
     from cook2ltl.library import LibraryEntry, Version
+    from cook2ltl.library.versions import Review
     from cook2ltl.library.recheck import Recheck
     from cook2ltl.ltl.ast import Atom, Formula
     from cook2ltl.pipeline import ActionDone, StepResult, Translation
@@ -84,9 +85,11 @@ class LibraryLoaded(ScreenMessage):
 
 
 class EntryHistory(ScreenMessage):
-    def __init__(self, entry_id: int, versions: tuple[Version, ...]) -> None:
+    """Every body an entry had, and every approval and rejection of them."""
+
+    def __init__(self, entry_id: int, versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> None:
         super().__init__()
-        self.entry_id, self.versions = entry_id, versions
+        self.entry_id, self.versions, self.reviews = entry_id, versions, reviews
 
 
 class EditorReady(ScreenMessage):

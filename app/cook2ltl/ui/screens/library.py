@@ -100,7 +100,8 @@ class LibraryScreen(WorkScreen):
 
     @work(thread=True, exclusive=True, exit_on_error=False, group="library-history")
     def load_history(self, entry_id: int) -> None:
-        self.post_message(EntryHistory(entry_id, self.library.history(entry_id)))
+        library = self.library
+        self.post_message(EntryHistory(entry_id, library.history(entry_id), library.reviews(entry_id)))
 
     def on_input_changed(self, event: Input.Changed) -> None:
         if event.input.id == "search":
@@ -153,7 +154,7 @@ class LibraryScreen(WorkScreen):
     def on_entry_history(self, message: EntryHistory) -> None:
         entry = self.selected()
         if entry is not None and entry.id == message.entry_id:
-            self.query_one(EntryDetail).show(entry, message.versions)
+            self.query_one(EntryDetail).show(entry, message.versions, message.reviews)
 
     def selected(self) -> LibraryEntry | None:
         table = self.query_one("#entries", DataTable)

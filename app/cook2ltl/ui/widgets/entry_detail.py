@@ -9,6 +9,7 @@ from textual.widgets import Static
 
 if TYPE_CHECKING:
     from cook2ltl.library import LibraryEntry, Version
+    from cook2ltl.library.versions import Review
 
 STATUS_STYLE = {"pending": "$text-warning", "approved": "$text-success", "rejected": "$text-error"}
 CHECK_STYLE = {"passed": "$text-success", "failed": "$text-error", "unchecked": "$text-muted"}
@@ -26,13 +27,14 @@ def check_content(validation: str) -> Content:
 class EntryDetail(Static):
     """Blank until an entry is chosen; the versions arrive a moment later, read by a worker."""
 
-    def show(self, entry: LibraryEntry | None, versions: tuple[Version, ...] = ()) -> None:
+    def show(self, entry: LibraryEntry | None, versions: tuple[Version, ...] = (),
+             reviews: tuple[Review, ...] = ()) -> None:
         if entry is None:
             self.update(EMPTY)
             return
         parts = [_body(entry), _review(entry)]
         if versions:
-            parts.append(_history(versions))
+            parts.append(_history(versions, reviews))
         self.update(Content("\n\n").join(parts))
 
 
@@ -56,10 +58,12 @@ def _review(entry: LibraryEntry) -> Content:
     return Content("\n").join(lines)
 
 
-def _history(versions: tuple[Version, ...]) -> Content:
+def _history(versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> Content:
     lines = [Content("history").stylize("bold")]
     for version in reversed(versions):  # newest first
         note = f" · {version.note}" if version.note else ""
+        lines += [Content("    ") + status_content(review.status) + Content(f" by {review.reviewer} at {review.at}")
+                  for review in reversed(reviews) if review.version == version.version]
         lines.append(Content(f"v{version.version:<3}").stylize("bold") + Content(f"{version.at} {version.author}")
                      + Content(note).stylize("$text-muted") + Content("  ") + check_content(version.validation))
         if version is not versions[-1]:
