@@ -97,8 +97,6 @@ def test_a_backend_sets_them_before_it_imports_its_library():
     assert result.stdout.strip() == "['1', '1', '1']"
 
 
-@pytest.mark.xfail(strict=True, reason="ui/__main__.py and ui.run_app never call cook2ltl.offline.enforce(); "
-                                       "owner: ui helper (add `offline.enforce()` first in run_app)")
 def test_the_textual_app_sets_the_offline_variables_before_it_starts():
     result = run_python(
         "import runpy, sys\nimport textual.app\ntextual.app.App.run = lambda self, *a, **k: None\n"

@@ -3,7 +3,7 @@
 import sys
 
 from cook2ltl.errors import UserError
-from cook2ltl.ui import run_app
+from cook2ltl.ui.app import run_app
 
 try:
     run_app(sys.argv[1] if len(sys.argv) > 1 else None)

@@ -93,6 +93,9 @@ def _log_traceback(error: BaseException) -> Path | None:
 
 def run_app(recipe_path: str | Path | None = None) -> None:
     """Open the app, on a recipe file if one is given (read now, so a bad file is a CLI error)."""
+    from cook2ltl import offline
+
+    offline.enforce()  # before any model library is imported, however the app was started
     text = ""
     if recipe_path is not None:
         from cook2ltl.cli.inputs import read_recipe
