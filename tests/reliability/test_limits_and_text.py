@@ -95,8 +95,6 @@ def test_a_settings_path_that_is_a_folder_is_a_clear_error(tmp_path):
         load_settings(tmp_path)
 
 
-@pytest.mark.xfail(strict=True, reason="models/manifest.py load_manifest catches FileNotFoundError only: "
-                                       "COOK2LTL_MODELS_DIR naming a file gives NotADirectoryError, a traceback")
 def test_a_models_folder_that_is_a_file_is_a_clear_error(tmp_path):
     from cook2ltl.models.manifest import load_manifest
 

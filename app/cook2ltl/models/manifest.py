@@ -60,8 +60,10 @@ def load_manifest(folder: Path | None = None) -> dict[str, ModelEntry]:
     path = (folder or paths.models_dir()) / MANIFEST
     try:
         raw = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError as error:
+    except (FileNotFoundError, NotADirectoryError) as error:
         raise UserError(f"No model manifest at {path}.", "set COOK2LTL_MODELS_DIR to the project's models/ folder.") from error
+    except (OSError, UnicodeDecodeError) as error:
+        raise UserError(f"Cannot read the model manifest {path}: {error}") from error
     except tomllib.TOMLDecodeError as error:
         raise UserError(f"{path} is not valid TOML: {error}") from error
     try:
