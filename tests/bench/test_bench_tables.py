@@ -115,6 +115,10 @@ def test_the_markdown_has_mean_and_std_beside_the_paper_and_marks_unfinished_run
     assert "scripted: AR+𝔸 makes 0.60 × the calls of AR*, 0.75 × AR" in table
     only_partial = table1_markdown([dict(rows[-1], recipes_done=1)], total=2)
     assert "| partial: 1 of 2 recipes |" in only_partial
+    # AR* cut short after the first recipe: compared with AR+A over that recipe only (1 call against 2).
+    cut = [r for r in rows if r["variant"] == "AR+A"] + [dict(next(r for r in rows if r["variant"] == "AR*"),
+                                                             recipes_done=1)]
+    assert "AR+𝔸 makes 0.50 × the calls of AR* over the first 1 recipes (paper" in table1_markdown(cut, total=2)
 
 
 def test_a_warm_rerun_needs_its_cold_run():
