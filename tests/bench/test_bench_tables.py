@@ -134,7 +134,7 @@ def test_mean_std_and_written_files(tmp_path):
     json_path, md_path = write(tmp_path / "out", "demo", {"value": 1}, "| a |\n")
     record = json.loads(json_path.read_text())
     assert record["benchmark"] == "demo" and record["value"] == 1 and record["machine"]["cpus"] >= 1
-    assert md_path.read_text().splitlines()[1] == "| a |" and "CPUs, load average" in md_path.read_text()
+    assert md_path.read_text().splitlines()[1] == "| a |" and "CPUs at nice" in md_path.read_text()
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["demo.json", "demo.md"]
 
 

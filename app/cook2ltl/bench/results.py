@@ -31,6 +31,7 @@ def machine() -> dict:
     return {
         "cpus": os.cpu_count(),
         "load_average": [round(v, 2) for v in os.getloadavg()],
+        "nice": os.nice(0),  # a benchmark run at low priority on a shared machine measures the sharing too
         "python": platform.python_version(),
         "platform": platform.platform(),
         "commit": _commit(),
@@ -50,8 +51,9 @@ def write(out: Path, name: str, record: dict, markdown: str) -> tuple[Path, Path
     _replace(json_path, json.dumps(record, indent=2, ensure_ascii=False) + "\n")
     where = record["machine"]
     load = " / ".join(f"{v:.1f}" for v in where["load_average"])
-    _replace(md_path, f"<!-- {record['command']} -->\n{markdown.rstrip()}\n\n_Measured on {where['cpus']} CPUs, load "
-                      f"average {load} (1 / 5 / 15 min) when written, commit {where['commit']}, {where['at']}._\n")
+    _replace(md_path, f"<!-- {record['command']} -->\n{markdown.rstrip()}\n\n_Measured on {where['cpus']} CPUs at nice "
+                      f"{where['nice']}, load average {load} (1 / 5 / 15 min) when written, commit {where['commit']}, "
+                      f"{where['at']}._\n")
     return json_path, md_path
 
 
