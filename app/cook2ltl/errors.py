@@ -11,3 +11,14 @@ class UserError(Exception):
 
     def __str__(self) -> str:
         return f"{self.message}\n  hint: {self.hint}" if self.hint else self.message
+
+
+def require_utf8(value: str, what: str, hint: str) -> str:
+    """The value, unless Python decoded it with surrogateescape (bytes that are not UTF-8, from argv or the
+    environment): nothing downstream (sqlite, files, the terminal) can encode those lone surrogates."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:
+        shown = value.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+        raise UserError(f"{what} {shown!r} is not UTF-8 text.", hint) from None
+    return value

@@ -112,7 +112,7 @@ def small_library(tmp_path_factory):
     return str(path)
 
 
-# Ids within SQLite's 64-bit integers: larger ones are a known traceback (test_library_files.py, xfail).
+# Ids within SQLite's 64-bit integers here; larger ones are in test_library_files.py.
 @CLI
 @given(st.sampled_from(["show", "approve", "reject", "history", "undo"]),
        st.one_of(st.integers(-2**63, 2**63 - 1).map(str), st.text(max_size=12)), st.text(max_size=30))

@@ -199,18 +199,17 @@ def test_any_mutation_of_an_export_imports_or_is_a_user_error_and_never_half_imp
         store.close()
 
 
-@pytest.mark.xfail(strict=True, reason="cli/library_command.py + library/store.py: an entry id beyond SQLite's "
-                                       "64-bit integers raises OverflowError (a traceback) in show, approve, reject, "
-                                       "history, undo; owner: library helper")
-def test_an_entry_id_beyond_64_bits_is_a_clear_error(tmp_path):
+@pytest.mark.parametrize("command", [["show"], ["approve"], ["reject"], ["history"], ["undo"],
+                                     ["edit", "--body-file", "-"]])
+@pytest.mark.parametrize("entry_id", [2**63, 2**70])
+def test_an_entry_id_beyond_64_bits_is_a_clear_error(tmp_path, command, entry_id):
     approved_library(tmp_path / "library.sqlite")
-    assert_refused(cook2ltl("library", "show", str(2**70), "--library", str(tmp_path / "library.sqlite")))
+    before = library_state(tmp_path / "library.sqlite")
+    assert_refused(cook2ltl("library", command[0], str(entry_id), *command[1:],
+                            "--library", str(tmp_path / "library.sqlite")), f"No entry {entry_id}")
+    assert library_state(tmp_path / "library.sqlite") == before
 
 
-@pytest.mark.xfail(strict=True, reason="a command-line argument or COOK2LTL_USER that is not UTF-8 (Python reads it "
-                                       "as a lone surrogate) reaches sqlite as UnicodeEncodeError, a traceback: "
-                                       "`library list --search`, `--by`, COOK2LTL_USER; owner: library helper (or one "
-                                       "check of sys.argv in cli.main)")
 @pytest.mark.parametrize("arguments, environment", [([b"list", b"--search", b"\xff"], {}),
                                                     ([b"approve", b"1", b"--by", b"\xff"], {}),
                                                     ([b"reject", b"1"], {b"COOK2LTL_USER": b"\xff"})])
@@ -219,4 +218,5 @@ def test_arguments_that_are_not_utf8_are_a_clear_error(tmp_path, arguments, envi
     result = subprocess.run([sys.executable.encode(), b"-m", b"cook2ltl", b"library", *arguments,
                              b"--library", str(tmp_path / "library.sqlite").encode()],
                             env={**os.environb, **environment}, capture_output=True, text=True, timeout=120)
-    assert_refused(result)
+    assert_refused(result, "not UTF-8")
+    assert "\ufffd" in result.stderr or "COOK2LTL_USER" in result.stderr  # names what to fix

@@ -17,7 +17,7 @@ from cook2ltl.cli.models_command import models_app
 from cook2ltl.cli.parse_command import parse_command
 from cook2ltl.cli.rollout_command import rollout_command
 from cook2ltl.cli.translate_command import translate_command
-from cook2ltl.errors import UserError
+from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.ltl.cli import ltl_app
 
 app = typer.Typer(help="Cooking recipes to LTL task specifications, offline. Without a command: the app.",
@@ -68,6 +68,8 @@ def main() -> None:
 
     offline.enforce()
     try:
+        for argument in sys.argv[1:]:  # once here, rather than in every command that stores or prints text
+            require_utf8(argument, "The argument", "retype it in a UTF-8 terminal.")
         app()
     except UserError as error:
         console = Console(stderr=True)

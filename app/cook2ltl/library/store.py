@@ -25,13 +25,14 @@ from pathlib import Path
 
 from sqlite_utils import Database
 
-from cook2ltl.errors import UserError
+from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.library import versions
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
 from cook2ltl.library.versions import Review, Version, checked, now
 
 __all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer"]
 REPLACER = "cook2ltl"  # who rejects a pending entry that a new reduction replaces
+SQLITE_INTEGERS = (-2**63, 2**63 - 1)  # the ids sqlite can store
 
 
 class Status(StrEnum):
@@ -66,9 +67,11 @@ class LibraryEntry:
 def reviewer() -> str:
     """Who is at the keyboard: $COOK2LTL_USER, else the login name."""
     try:
-        return os.environ.get("COOK2LTL_USER") or getpass.getuser()
+        name = os.environ.get("COOK2LTL_USER") or getpass.getuser()
     except (KeyError, OSError):  # no login name (a container without a passwd entry)
         return "unknown"
+    return require_utf8(name, "COOK2LTL_USER (or the login name)",
+                        "set COOK2LTL_USER to a UTF-8 name, or pass --by NAME.")
 
 
 class Library:
@@ -232,7 +235,9 @@ class Library:
     # --- inside a transaction ------------------------------------------------------------------------------
 
     def _row(self, entry_id: int, missing_ok: bool = False) -> dict | None:
-        row = next(self._db()[TABLE].rows_where("id = ?", [entry_id]), None)
+        row = None
+        if SQLITE_INTEGERS[0] <= entry_id <= SQLITE_INTEGERS[1]:  # sqlite3 overflows on any other int
+            row = next(self._db()[TABLE].rows_where("id = ?", [entry_id]), None)
         if row is None and not missing_ok:
             raise UserError(f"No entry {entry_id} in the action library {self.path}.",
                             "`cook2ltl library list` shows them.")
