@@ -11,7 +11,7 @@ import time
 import pytest
 
 from cook2ltl.errors import UserError
-from cook2ltl.kitchen.launcher import start_embedded
+from cook2ltl.kitchen.launcher import KitchenUnavailable, start_embedded
 from cook2ltl.kitchen.tasks import find_task, reference_formula
 from cook2ltl.kitchen.trial import TrialDone, run_trial
 from tests.reliability.processes import adopting_orphans, children, command_line, wait_until_gone
@@ -81,26 +81,36 @@ def test_a_player_that_dies_under_a_running_controller_leaves_nothing_behind(kit
     player = controller.server.unity_proc
     player.kill()
     player.wait(10)
-    with pytest.raises(OSError):
+    with pytest.raises(KitchenUnavailable, match="stopped answering during Pass"):
         controller.step(action="Pass")
-    with pytest.raises(OSError):
-        controller.stop()  # ai2thor's own stop fails on the broken pipe; the player is gone all the same
+    controller.stop()  # ai2thor's own stop fails on the broken pipe; ours finishes the job quietly
+    assert controller.server.client_pipe.closed and controller.server.server_pipe.closed
     assert all(PLAYER not in command_line(pid) for pid in children(os.getpid()))
 
 
-@pytest.mark.xfail(strict=True, reason="a kitchen that dies mid-rollout reaches the user as BrokenPipeError (from "
-                                       "Controller.reset/step in kitchen/trial.py, rollout.py, and Controller.stop "
-                                       "in cli/rollout_command.py), not as KitchenUnavailable; owner: kitchen helper")
 def test_a_kitchen_that_dies_mid_rollout_is_a_clear_error(kitchen_home):
     task = find_task("refrigerate-apple")
     controller = start_embedded(task.scene)
     controller.server.unity_proc.kill()
     controller.server.unity_proc.wait(10)
     try:
-        with pytest.raises(UserError, match="THOR unavailable"):
+        with pytest.raises(UserError, match="THOR unavailable: the kitchen stopped answering"):
             list(run_trial(controller, reference_formula(task), task.scene, task))
     finally:
-        try:
-            controller.stop()
-        except OSError:
-            pass
+        controller.stop()
+    assert all(PLAYER not in command_line(pid) for pid in children(os.getpid()))
+
+
+def test_a_kitchen_that_dies_between_actions_is_a_clear_error(kitchen_home):
+    task = find_task("refrigerate-apple")
+    controller = start_embedded(task.scene)
+    events = run_trial(controller, reference_formula(task), task.scene, task)
+    try:
+        next(events)  # the kitchen is reset and set up; the first action has run
+        controller.server.unity_proc.kill()
+        controller.server.unity_proc.wait(10)
+        with pytest.raises(UserError, match="THOR unavailable: the kitchen stopped answering"):
+            list(events)
+    finally:
+        controller.stop()
+    assert all(PLAYER not in command_line(pid) for pid in children(os.getpid()))

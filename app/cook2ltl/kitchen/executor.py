@@ -23,7 +23,6 @@ from types import MappingProxyType
 from typing import Any, Protocol
 
 from ..ltl.ast import Atom
-from .launcher import KitchenUnavailable
 from .names import Binding, Obj, UnknownObject, by_id, held, objects_named, resolve
 from .scenes import load_type_rules
 
@@ -169,12 +168,10 @@ def _run(kitchen: Kitchen, atom: Atom, calls: list[ThorCall], action: dict[str, 
 
 
 def send(kitchen: Kitchen, action: Mapping[str, Any]) -> tuple[ThorCall, Mapping[str, Any]]:
-    """One THOR action; a refusal is an answer like any other, a dead kitchen is not."""
+    """One THOR action; a refusal is an answer like any other, a dead kitchen is not (KitchenController raises)."""
     try:
         event = kitchen.step(dict(action))
     except ValueError:
         event = kitchen.last_event  # the Controller raises for argument errors after storing the answer
-    except (TimeoutError, RuntimeError) as err:
-        raise KitchenUnavailable(f"the kitchen stopped answering during {action['action']}: {err}") from err
     metadata = event.metadata
     return ThorCall(action, bool(metadata["lastActionSuccess"]), metadata.get("errorMessage") or ""), metadata

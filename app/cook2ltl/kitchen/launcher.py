@@ -260,7 +260,9 @@ def _start_guarded(controller, scene: str, init_params: dict[str, Any], timeout:
         raise KitchenUnavailable(reason)
     if "error" in outcome:
         _stop_quietly(controller)
-        raise KitchenUnavailable(f"{what} failed to start: {_first_lines(outcome['error'])}") from outcome["error"]
+        error = outcome["error"]
+        reason = error.reason if isinstance(error, KitchenUnavailable) else _first_lines(error)
+        raise KitchenUnavailable(f"{what} failed to start: {reason}") from error
     return controller
 
 
@@ -317,10 +319,10 @@ def _first_lines(err: BaseException, limit: int = 3) -> str:
 
 def _controller_class():
     try:
-        from ai2thor.controller import Controller
+        from .controller import KitchenController
     except ImportError as err:
         raise KitchenUnavailable(f"the ai2thor package is not installed ({err}); pip install ai2thor") from err
-    return Controller
+    return KitchenController
 
 
 def _controller_commit() -> str | None:
