@@ -28,6 +28,21 @@ def test_cli_and_core_import_no_model_library():
                      HEAVY) == []
 
 
+def test_the_command_line_loads_a_headless_command_only_when_it_runs():
+    """`cook2ltl app` starts without the pipeline, the library or the LTL parser; `--help` still lists them all."""
+    assert _imported("cook2ltl.cli", ["cook2ltl.pipeline", "cook2ltl.library", "cook2ltl.ltl", "sqlite_utils",
+                                      "cook2ltl.cli.translate_command", "cook2ltl.cli.bench_command"]) == []
+    from typer.testing import CliRunner
+
+    from cook2ltl.cli import COMMANDS, app
+
+    listed = CliRunner().invoke(app, ["--help"], env={"COLUMNS": "200"})
+    assert listed.exit_code == 0
+    for name in [*COMMANDS, "app", "doctor"]:
+        assert f"│ {name} " in listed.output
+    assert "Translate a recipe into LTL formulas" in listed.output  # each command's own help, read from its module
+
+
 def test_the_pipeline_library_and_kitchen_load_without_the_app():
     core = ("cook2ltl.pipeline, cook2ltl.library, cook2ltl.kitchen.trial, cook2ltl.kitchen.planning, "
             "cook2ltl.translate.serialize, cook2ltl.ltl")

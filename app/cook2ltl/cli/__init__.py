@@ -3,32 +3,57 @@ ltl | models | doctor` are headless."""
 
 from __future__ import annotations
 
+import importlib
 import sys
 from pathlib import Path
 from typing import Optional
 
+import click
 import typer
 from rich.console import Console
 from rich.markup import escape
+from typer.core import TyperGroup
 
-from cook2ltl.cli.bench_command import bench_command
-from cook2ltl.cli.library_command import library_app
-from cook2ltl.cli.models_command import models_app
-from cook2ltl.cli.parse_command import parse_command
-from cook2ltl.cli.rollout_command import rollout_command
-from cook2ltl.cli.translate_command import translate_command
 from cook2ltl.errors import UserError, require_utf8
-from cook2ltl.ltl.cli import ltl_app
+
+# The headless commands, imported only when run or listed: `cook2ltl app` starts without loading them.
+COMMANDS = {
+    "parse": ("cook2ltl.cli.parse_command", "parse_command"),
+    "translate": ("cook2ltl.cli.translate_command", "translate_command"),
+    "rollout": ("cook2ltl.cli.rollout_command", "rollout_command"),
+    "bench": ("cook2ltl.cli.bench_command", "bench_command"),
+    "library": ("cook2ltl.cli.library_command", "library_app"),
+    "models": ("cook2ltl.cli.models_command", "models_app"),
+    "ltl": ("cook2ltl.ltl.cli", "ltl_app"),
+}
+
+
+class LazyCommands(TyperGroup):
+    """The top-level group: a command in COMMANDS is imported and built (by Typer, as if registered eagerly)
+    the first time it is looked up."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return [*COMMANDS, *super().list_commands(ctx)]
+
+    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
+        if name in COMMANDS and name not in self.commands:
+            self.commands[name] = _built(name)
+        return super().get_command(ctx, name)
+
+
+def _built(name: str) -> click.Command:
+    module, attribute = COMMANDS[name]
+    target = getattr(importlib.import_module(module), attribute)
+    holder = typer.Typer()
+    if isinstance(target, typer.Typer):
+        holder.add_typer(target, name=name)
+    else:
+        holder.command(name)(target)
+    return typer.main.get_group(holder).commands[name]
+
 
 app = typer.Typer(help="Cooking recipes to LTL task specifications, offline. Without a command: the app.",
-                  pretty_exceptions_enable=False)
-app.command("parse")(parse_command)
-app.command("translate")(translate_command)
-app.command("rollout")(rollout_command)
-app.command("bench")(bench_command)
-app.add_typer(library_app, name="library")
-app.add_typer(models_app, name="models")
-app.add_typer(ltl_app, name="ltl")
+                  pretty_exceptions_enable=False, cls=LazyCommands)
 
 
 @app.callback(invoke_without_command=True)
