@@ -10,6 +10,9 @@
     recipe_bytes = 200000
     steps = 500
     llm_seconds = 120                          # wall-clock bound of one reduction by the language model
+    [keymap]                                   # the app's keys: binding id = keys (a wrong id is named)
+    "translate.run" = "ctrl+enter"
+    "library.approve" = "y,a"
 """
 
 from __future__ import annotations
@@ -43,6 +46,7 @@ class Limits:
 class Settings:
     ner: NerSettings = NerSettings()
     limits: Limits = Limits()
+    keymap: dict[str, str] = field(default_factory=dict)  # binding id -> keys; the app checks the ids
     source: Path | None = None
 
 
@@ -66,7 +70,17 @@ def load_settings(path: Path | None = None) -> Settings:
         raise UserError(f"{path}: bad [ner] setting: {error}",
                         f"labels are keyed by {', '.join(Label)}; threshold is a number.") from error
     return Settings(ner=NerSettings(checkpoint, labels, threshold), limits=_limits(raw.get("limits", {}), path),
-                    source=path)
+                    keymap=_keymap(raw.get("keymap", {}), path), source=path)
+
+
+def _keymap(raw: dict, path: Path) -> dict[str, str]:
+    if not isinstance(raw, dict):
+        raise UserError(f"{path}: keymap is not a table.", 'write [keymap] then lines like "translate.run" = "f5".')
+    for binding, keys in raw.items():
+        if not isinstance(keys, str) or not keys.strip():
+            raise UserError(f"{path}: [keymap] {binding} = {keys!r} is not a key.",
+                            'give keys as a string, e.g. "ctrl+r" or "f5,ctrl+r".')
+    return dict(raw)
 
 
 def _limits(raw: dict, path: Path) -> Limits:

@@ -17,7 +17,14 @@ def test_settings_read_a_lab_checkpoint_and_its_label_names(tmp_path):
     assert settings.ner.labels == {Label.VERB: "action"} and settings.ner.threshold == 0.4
 
 
-@pytest.mark.parametrize("content", ["[ner\n", '[ner.labels]\nCOLOUR = "x"\n', '[ner]\nthreshold = "high"\n'])
+def test_settings_read_a_keymap(tmp_path):
+    config = tmp_path / "config.toml"
+    config.write_text('[keymap]\n"translate.run" = "f5"\n"library.approve" = "y,a"\n')
+    assert load_settings(config).keymap == {"translate.run": "f5", "library.approve": "y,a"}
+
+
+@pytest.mark.parametrize("content", ["[ner\n", '[ner.labels]\nCOLOUR = "x"\n', '[ner]\nthreshold = "high"\n',
+                                     'keymap = 3\n', '[keymap]\n"translate.run" = 5\n', '[keymap]\nx = " "\n'])
 def test_bad_settings_are_user_errors(tmp_path, content):
     config = tmp_path / "config.toml"
     config.write_text(content)

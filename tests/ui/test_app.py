@@ -82,3 +82,26 @@ async def test_the_palette_offers_the_actions_of_the_screen_in_front(make_app):
         await pilot.press("enter")
         await pilot.pause()
         assert isinstance(app.screen, RolloutScreen)
+
+
+@pytest.mark.anyio
+async def test_a_keymap_from_the_settings_moves_the_keys(make_app):
+    app = make_app(keymap={"app.library": "f9", "app.rollout": "ctrl+t"})
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f3")
+        assert isinstance(app.screen, TranslateScreen)  # the old key is free
+        await pilot.press("f9")
+        assert isinstance(app.screen, LibraryScreen)
+        await pilot.press("ctrl+t")
+        assert isinstance(app.screen, RolloutScreen)
+
+
+def test_a_keymap_naming_no_binding_is_a_clear_error_before_the_app_starts(sandbox, monkeypatch, tmp_path):
+    from cook2ltl.ui.app import run_app
+
+    config = tmp_path / "config.toml"
+    config.write_text('[keymap]\n"library.aprove" = "y"\n')
+    monkeypatch.setenv("COOK2LTL_CONFIG", str(config))
+    with pytest.raises(UserError, match="names no binding library.aprove") as raised:
+        run_app()
+    assert "library.approve" in raised.value.hint

@@ -9,10 +9,12 @@ from __future__ import annotations
 import traceback
 from datetime import datetime
 from pathlib import Path
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from textual.app import App
 from textual.binding import Binding
+from textual.screen import Screen
 
 from cook2ltl.errors import UserError
 from cook2ltl.ui.commands import MainCommands
@@ -43,13 +45,22 @@ class Cook2LTLApp(App):
         Binding("f4", "switch_mode('rollout')", "Rollout", id="app.rollout"),
     ]
 
-    def __init__(self, services: Services, recipe_text: str = "", recipe_path: Path | None = None) -> None:
+    def __init__(self, services: Services, recipe_text: str = "", recipe_path: Path | None = None,
+                 keymap: Mapping[str, str] | None = None) -> None:
         super().__init__()
+        self.keymap = dict(keymap or {})
+        unknown = sorted(set(self.keymap) - binding_ids())
+        if unknown:
+            raise UserError(f"The settings' [keymap] names no binding {', '.join(unknown)}.",
+                            f"the binding ids are {', '.join(sorted(binding_ids()))}.")
         self.services = services
         self.recipe_text = recipe_text
         self.recipe_path = recipe_path
         self.model_name = services.model_names[0]  # chosen on Translate, used by Rollout's planning too
         self.translation: Translation | None = None  # the last one finished, for the Rollout screen
+
+    def on_mount(self) -> None:
+        self.set_keymap(self.keymap)
 
     def on_translation_done(self, message: TranslationDone) -> None:
         self.translation = message.translation
@@ -75,6 +86,17 @@ class Cook2LTLApp(App):
 
     def on_unmount(self) -> None:
         self.services.close()
+
+
+def binding_ids() -> set[str]:
+    """The id of every key binding of the app and its screens: what a [keymap] may remap."""
+    classes, pending = [Cook2LTLApp], list(Screen.__subclasses__())
+    while pending:
+        screen = pending.pop()
+        pending.extend(screen.__subclasses__())
+        if screen.__module__.startswith("cook2ltl.ui"):
+            classes.append(screen)
+    return {binding.id for cls in classes for binding in cls.BINDINGS if isinstance(binding, Binding) and binding.id}
 
 
 def _log_traceback(error: BaseException) -> Path | None:
@@ -104,4 +126,7 @@ def run_app(recipe_path: str | Path | None = None) -> None:
             raise UserError("The app reads its keys from the terminal, not a recipe from standard input.",
                             "give a recipe file, or paste the recipe into the app's editor.")
         text = read_recipe(str(recipe_path))
-    Cook2LTLApp(production_services(), text, Path(recipe_path) if recipe_path else None).run()
+    from cook2ltl.settings import load_settings
+
+    keymap = load_settings().keymap
+    Cook2LTLApp(production_services(), text, Path(recipe_path) if recipe_path else None, keymap).run()
