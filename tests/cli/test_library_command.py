@@ -11,7 +11,8 @@ import pytest
 from cook2ltl.library import Library, Status
 
 BOIL = "pick_up($what)\nput($what, pot)"  # the egg is in the closed fridge: THOR refuses the pick up
-GOOD = "open(fridge)\npick_up($what)\nput($what, pot)"
+# The pot on the burner first: the kitchen check wants boil's goal state, a hot egg, at the end.
+GOOD = "pick_up(pot)\nput(pot, stovetop)\nopen(fridge)\npick_up($what)\nput($what, pot)\nturn_on(stovetop)\nwait($what == boiled)"
 
 
 def cook2ltl(*arguments: str, stdin: str | None = None, user: str = "lab-tester") -> subprocess.CompletedProcess:
@@ -115,7 +116,8 @@ def test_an_edit_that_fails_in_the_kitchen_is_saved_only_when_asked(seeded):
     assert kept.returncode == 0 and "kitchen check failed" in kept.stdout
     current, _ = entry(seeded)
     assert (current.validation, current.problems) == (
-        "failed", ("line 1 put(egg, pot): the agent holds nothing; the plan must pick up egg first",))
+        "failed", ("line 1 put(egg, pot): the agent holds nothing; the plan must pick up egg first",
+                   "boil(egg): goal state not reached: egg is not hot at the end"))
 
 
 def test_an_edit_without_the_kitchen_or_without_example_values_is_unchecked(seeded):

@@ -36,7 +36,8 @@ def test_library_verbs_in_the_body_are_expanded_before_the_kitchen_runs_it(libra
     boil = library.add("recipe", "boil", ("what",), "put($what, pot)", "qwen", "h", example={"$what": "egg"})
     primitives = load_primitives("recipe")
     verbs = live_verbs(library, "recipe")
-    passed = recheck(boil, "fetch($what)\nput($what, pot)", primitives, verbs, kitchen)
+    heated = "pick_up(pot)\nput(pot, stovetop)\nfetch($what)\nput($what, pot)\nturn_on(stovetop)\nwait($what == boiled)"
+    passed = recheck(boil, heated, primitives, verbs, kitchen)
     assert (passed.validation, passed.problems) == ("passed", ())
     failed = recheck(boil, "put($what, pot)", primitives, verbs, kitchen)
     assert failed.validation == "failed" and failed.problems[0].startswith("line 1 put(egg, pot)")
