@@ -37,7 +37,7 @@ def test_hostile_recipe_files_are_refused_clearly(tmp_path, name, command):
     result = cook2ltl(command, str(tmp_path / "recipe.txt"), *(translating if command == "translate" else []))
     err = result.stderr.decode()
     assert result.returncode == 2 and "Traceback" not in err, err
-    assert err.lstrip("\n").startswith("error: ") and message in " ".join(err.split()), err
+    assert err.startswith("error: ") and message in " ".join(err.split()), err
 
 
 def test_binary_on_standard_input_is_refused(tmp_path):

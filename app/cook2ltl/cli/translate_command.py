@@ -108,7 +108,8 @@ def with_validation(data: dict, translation: Translation) -> dict:
 
 def _follow(events, console: Console) -> Translation:
     columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
-    with Progress(*columns, console=console, transient=True) as progress:
+    # Off a terminal the bar draws nothing, not even the blank line a transient bar leaves before an error.
+    with Progress(*columns, console=console, transient=True, disable=not console.is_terminal) as progress:
         task = progress.add_task("parsing", total=None)
         for event in events:
             if isinstance(event, Started):
