@@ -1,14 +1,13 @@
-"""The paper's ablation (Table I) on its 50 evaluation recipes, and the kitchen check of their new reductions.
+"""The kitchen check of the new reductions of the paper's 50 evaluation recipes, without and with repairs.
 
-    .venv/bin/python bench/translate_50.py [--model qwen2.5-coder-1.5b] [--variants AR* AR AR+A] [--limit 50]
-    .venv/bin/python bench/translate_50.py --validate --repairs 0 2 [--out bench/results]
+    .venv/bin/python bench/translate_50.py [--model qwen2.5-coder-1.5b] [--repairs 0 2] [--limit 50] [--out bench/results]
     .venv/bin/python bench/translate_50.py --summarize bench/results/validation-*.jsonl   # a run cut short
 
 The recipes (tests/data/eval_recipes_50.csv, column "Edited text") are parsed once with the real parser;
-AR+A starts from an empty library and grows it over the 50 recipes in order, as in the paper. Which actions
-reach the model depends only on the parse and the variant, so the call counts of AR* and AR hold for any model.
+AR+A starts from an empty library and grows it over the 50 recipes in order, as in the paper. The ablation
+itself (Table I: AR*, AR, AR+A) is `cook2ltl bench table1`.
 
-With --validate, AR+A runs once per --repairs value with the kitchen validator: the share of new reductions
+AR+A runs once per --repairs value with the kitchen validator: the share of new reductions
 whose plan runs in the THOR kitchen (validated rate), beside the paper's executability. Each recipe's
 results are appended to <out>/validation-<model>-repairs<N>.jsonl as soon as it is done, so a run cut
 short still leaves its figures; the summary goes to validation-<model>.json and .md.
@@ -29,7 +28,7 @@ from pathlib import Path
 from cook2ltl import offline
 from cook2ltl.library import Library
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Finished, Translation, Translator, Variant, rates, translate
+from cook2ltl.pipeline import Finished, Translation, Translator, rates, translate
 from cook2ltl.reduce.llm import DEFAULT_MODEL, load_model
 from cook2ltl.reduce.model import Source
 from cook2ltl.reduce.primitives import load_primitives
@@ -43,9 +42,7 @@ RECIPES = Path(__file__).resolve().parents[1] / "tests" / "data" / "eval_recipes
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--model", default=DEFAULT_MODEL)
-    parser.add_argument("--variants", nargs="+", default=["AR*", "AR", "AR+A"])
     parser.add_argument("--limit", type=int, default=50)
-    parser.add_argument("--validate", action="store_true", help="AR+A with the kitchen check, once per --repairs")
     parser.add_argument("--repairs", nargs="+", type=int, default=[0, 2])
     parser.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
     parser.add_argument("--threads", type=int, help="llama.cpp threads (default: one per core); 1 on a shared machine")
@@ -64,26 +61,7 @@ def main() -> None:
     print(f"{len(parsed)} recipes parsed in {time.perf_counter() - started:.0f} s", flush=True)
     model, primitives = load_model(args.model), load_primitives("recipe")
     model.threads = args.threads or model.threads
-    if args.validate:
-        validation_runs(parsed, model, primitives, args.repairs, args.out)
-    else:
-        ablation(parsed, model, primitives, args.variants)
-
-
-def ablation(parsed, model, primitives, variants: list[str]) -> None:
-    print("| variant | actions | primitive | library hits | LLM calls | prompt tokens | completion tokens | LLM s | s |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for name in variants:
-        variant = Variant(name)
-        with tempfile.TemporaryDirectory() as folder:
-            library = Library(Path(folder) / "library.sqlite") if variant == Variant.AR_LIBRARY else None
-            translations = [_translation(recipe, Translator(primitives, model, library, variant)) for recipe in parsed]
-            if library is not None:
-                library.close()
-        totals = _totals(translations)
-        print(f"| {name} | {totals['actions']:.0f} | {totals['primitive']:.0f} | {totals['library_hits']:.0f} "
-              f"| {totals['llm_calls']:.0f} | {totals['prompt_tokens']:.0f} | {totals['completion_tokens']:.0f} "
-              f"| {totals['llm_seconds']:.0f} | {totals['seconds']:.0f} |", flush=True)
+    validation_runs(parsed, model, primitives, args.repairs, args.out)
 
 
 def validation_runs(parsed, model, primitives, repairs: list[int], out: Path) -> None:
