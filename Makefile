@@ -9,7 +9,6 @@ DEMO := assets/recipes/pasta-bake.txt
 export CMAKE_ARGS := -DGGML_NATIVE=OFF -DLLAVA_BUILD=OFF
 export HF_HUB_OFFLINE := 1
 export TRANSFORMERS_OFFLINE := 1
-export OMP_WAIT_POLICY := passive
 
 .PHONY: run test models install doctor clean-venv
 

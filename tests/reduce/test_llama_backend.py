@@ -47,3 +47,25 @@ def test_results_do_not_depend_on_the_cache(tiny_path, tmp_path):
     assert reversed_order[::-1] == in_order
     third = LlamaModel(TINY, tiny_path, state_dir=tmp_path)
     assert reduce_action(potato, thor, [], third, SETTINGS).body == in_order[0] and third.restored
+
+
+@pytest.mark.parametrize("shortlist", [64, 1])  # 1: the best token is often refused, so the full check runs
+def test_shortlist_decoding_gives_what_the_full_grammar_sampler_gives(tiny_path, monkeypatch, shortlist):
+    from llama_cpp import LlamaGrammar
+
+    from cook2ltl.reduce import decoding
+    from cook2ltl.reduce.grammar import to_gbnf
+    from cook2ltl.reduce.prompt import build_prompt
+
+    monkeypatch.setattr(decoding, "SHORTLIST", shortlist)
+    primitives, model = load_primitives("recipe"), LlamaModel(TINY, tiny_path)
+    for task in (action("simmer", ("what", "the sauce"), ("time", "for 20 minutes")), action("chop", ("what", "onion"))):
+        prompt = build_prompt(primitives, [], task, False, None)
+        grammar = to_gbnf(vocabulary(primitives, [], task), 4, comments=False)
+        ours = model.complete(prompt.static, prompt.dynamic, grammar, 60)
+        llama = model._llama
+        full = llama.create_completion(llama.tokenize((prompt.static + prompt.dynamic).encode()), max_tokens=60,
+                                       temperature=0.0, repeat_penalty=1.0,
+                                       grammar=LlamaGrammar.from_string(grammar, verbose=False))
+        assert ours.text == full["choices"][0]["text"] and ours.text.strip()
+        assert ours.usage.completion_tokens == full["usage"]["completion_tokens"]

@@ -80,38 +80,36 @@ class LlamaModel:
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
                  stop: Callable[[str], bool] | None = None) -> Completion:
         llama = self._loaded()
-        from llama_cpp import LlamaGrammar, StoppingCriteriaList
+        from cook2ltl.reduce.decoding import GrammarRejected, greedy_tokens
 
         started = time.perf_counter()
-        try:
-            compiled = LlamaGrammar.from_string(grammar, verbose=False)
-        except ValueError as error:
-            raise UserError(f"llama.cpp rejected the generated grammar: {error}",
-                            "check the names in the primitive set file; they must be plain identifiers.") from error
         # Tokenised apart, so the static tokens never depend on what follows them.
         prefix = llama.tokenize(static.encode())
         tokens = prefix + llama.tokenize(dynamic.encode(), add_bos=False)
+        room = llama.n_ctx() - len(tokens)
+        if room <= 0:
+            raise UserError(f"The prompt has {len(tokens)} tokens, more than the model's context of {llama.n_ctx()}.",
+                            "shorten the step, or review the library: every verb in it is listed in the prompt.")
         deadline = started + self.time_limit
         self._check(deadline)
         self._keep_only(llama, prefix, static, deadline)
-        start = len(tokens)
 
-        def stopped(ids, _) -> bool:
+        def keep_going(ids: list[int]) -> bool:
             if self.cancel.is_set() or time.perf_counter() > deadline:
-                return True
-            return stop is not None and stop(llama.detokenize(ids[start:].tolist()).decode("utf-8", errors="ignore"))
+                return False
+            return stop is None or not stop(self._text(ids))
 
-        result = llama.create_completion(
-            tokens, max_tokens=max_tokens, temperature=0.0, seed=self.seed, grammar=compiled,
-            repeat_penalty=1.0,  # plans rightly repeat objects (pot, pot, pot); a penalty would push them out
-            stopping_criteria=StoppingCriteriaList([stopped]),
-        )
+        try:
+            generated = list(greedy_tokens(llama, grammar, tokens, min(max_tokens, room), keep_going))
+        except GrammarRejected as error:
+            raise UserError("llama.cpp rejected the generated grammar.",
+                            "check the names in the primitive set file; they must be plain identifiers.") from error
         self._check(deadline)
-        usage = result["usage"]
-        return Completion(
-            result["choices"][0]["text"],
-            Usage(usage["prompt_tokens"], usage["completion_tokens"], time.perf_counter() - started),
-        )
+        return Completion(self._text(generated),
+                          Usage(len(tokens), len(generated), time.perf_counter() - started))
+
+    def _text(self, ids: list[int]) -> str:
+        return self._llama.detokenize(ids).decode("utf-8", errors="ignore")
 
     def _check(self, deadline: float) -> None:
         if self.cancel.is_set():
@@ -175,7 +173,7 @@ class LlamaModel:
         if self._llama is None:
             from cook2ltl import offline
 
-            offline.enforce()  # sets OMP_WAIT_POLICY before llama.cpp starts its threads
+            offline.enforce()  # sets GOMP_SPINCOUNT before llama.cpp starts its threads
             try:
                 from llama_cpp import Llama
             except ImportError as error:
