@@ -5,7 +5,8 @@ import json
 import pytest
 
 from cook2ltl.bench.results import mean_std, pm, write
-from cook2ltl.bench.table1 import VARIANTS, Stage, check_variants, library_bound, measure, table1_markdown
+from cook2ltl.bench.table1 import (FIRST_SEED, VARIANTS, Stage, check_variants, in_run_order, library_bound, measure,
+                                   table1_markdown)
 from cook2ltl.bench.table2 import table2_markdown
 from cook2ltl.errors import UserError
 from cook2ltl.parse import parse_recipe
@@ -96,15 +97,25 @@ def test_executability_is_admissible_plan_actions_over_all_generated():
 
 def test_runs_take_their_own_seed_and_library_and_report_after_every_recipe():
     rows, reports, _ = measured(runs=2, variants=("AR+A",))
-    assert [(row["run"], row["seed"], row["llm_calls"]) for row in rows] == [(1, 7, 3), (2, 8, 3)]
+    assert [(row["seed"], row["llm_calls"]) for row in rows] == [(7, 3), (8, 3)]
     partial = [report[-1]["recipes_done"] for report in reports]
     assert partial == [1, 2, 2, 1, 2, 2]  # each recipe as it finishes, then the finished row
     assert [(r["recipe"], r["actions"], r["llm_calls"]) for r in rows[0]["per_recipe"]] == [("1", 2, 1), ("2", 3, 2)]
 
 
+def test_the_first_seed_keeps_the_files_order_and_later_seeds_shuffle_it():
+    numbers = tuple(str(n) for n in range(20))
+    twenty = Stage(numbers, tuple(f"recipe {n}" for n in numbers), load_seconds=0.0, parse_seconds=0.0)
+    assert in_run_order(twenty, FIRST_SEED) == twenty
+    shuffled = [in_run_order(twenty, FIRST_SEED + k) for k in (1, 2)]
+    assert all(sorted(s.numbers, key=int) == list(numbers) and s.numbers != numbers for s in shuffled)
+    assert shuffled[0].numbers != shuffled[1].numbers and in_run_order(twenty, FIRST_SEED + 1) == shuffled[0]
+    assert all(s.recipes == tuple(f"recipe {n}" for n in s.numbers) for s in shuffled)  # pairs kept together
+
+
 def test_the_markdown_has_mean_and_std_beside_the_paper_and_marks_unfinished_runs():
     rows, _, _ = measured(runs=2)
-    running = dict(next(row for row in rows if row["variant"] == "AR*"), run=3, recipes_done=1, llm_calls=1)
+    running = dict(next(row for row in rows if row["variant"] == "AR*"), seed=9, recipes_done=1, llm_calls=1)
     table = table1_markdown(rows + [running], total=2)
     lines = table.splitlines()
     assert lines[0].startswith("| variant | model | runs | executability | validated rate | LLM calls")

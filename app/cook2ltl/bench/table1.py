@@ -4,9 +4,10 @@ Every run parses the recipes once, then translates them with each variant in VAR
 empty library growing over the 50 recipes; AR+𝔸 again against the library it grew (the warm rerun); AR+𝔸 in
 approved-only mode against that library once a reviewer ("bench") has approved the entries whose plans passed
 the kitchen check; AR (primitives passed through); AR* (every action reduced); and AR+𝔸 with repairs (a plan
-the kitchen refuses goes back to the model twice, as `cook2ltl translate` does) from an empty library. Runs
-differ by the model's seed; the model decodes at temperature 0, so the counts agree between runs and only
-the times vary.
+the kitchen refuses goes back to the model twice, as `cook2ltl translate` does) from an empty library. The
+model decodes greedily, so what differs between runs is the order in which the library meets the recipes:
+the first run takes the file's order, each later one a shuffle seeded by its run's seed. AR and AR* do not
+depend on the order, so their runs differ in time only.
 
 Every new reduction is run in the kitchen (cook2ltl.reduce.validation) without changing what is cached or
 which actions reach the model (no repairs, except in the repair variant): the validated rate is the share of
@@ -21,10 +22,11 @@ pipeline's own `rates` (model lines only, library hits not counted) is kept besi
 from __future__ import annotations
 
 import csv
+import random
 import tempfile
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from cook2ltl import paths
@@ -41,6 +43,7 @@ COLD, WARM, APPROVED, REPAIR = "AR+A", "AR+A warm", "AR+A approved-only", "AR+A 
 VARIANTS = (COLD, WARM, APPROVED, "AR", "AR*", REPAIR)
 SMOKE_VARIANTS = (COLD, WARM, "AR*")  # the other variants' logic is covered by the unit tests
 REVIEWER = "bench"
+FIRST_SEED = 4242  # its run keeps the file's order of the recipes
 REPAIRS = 2
 # Table I of the paper (gpt-3.5-turbo, 10 runs): executability, minutes, API calls.
 PAPER = {"AR*": (0.91, 14.85, 275), "AR": (0.92, 9.89, 231), "AR+A": (0.94, 6.05, 134)}
@@ -148,10 +151,21 @@ def _summary(totals: dict[str, float], translations: list[Translation], stage: S
     }
 
 
+def in_run_order(stage: Stage, seed: int) -> Stage:
+    """The recipes in the order a run meets them: the file's for the first seed, else shuffled by `seed`."""
+    if seed == FIRST_SEED:
+        return stage
+    order = list(range(len(stage.recipes)))
+    random.Random(seed).shuffle(order)
+    return replace(stage, numbers=tuple(stage.numbers[i] for i in order),
+                   recipes=tuple(stage.recipes[i] for i in order))
+
+
 def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int | None, out: Path,
-               echo: Callable[[str], None]) -> dict:
-    """Table I with the real models; the record and table are rewritten after each recipe."""
-    from cook2ltl.reduce.llm import SEED, load_model
+               echo: Callable[[str], None], seed: int = FIRST_SEED) -> dict:
+    """Table I with the real models, runs seeded `seed`, `seed` + 1, …; the record and table are rewritten
+    after each recipe."""
+    from cook2ltl.reduce.llm import load_model
     from cook2ltl.reduce.primitives import load_primitives
 
     check_variants(variants)
@@ -172,7 +186,7 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
     from cook2ltl.reduce.validation import KitchenValidator
 
     with KitchenValidator(primitives) as validator:
-        record["runs"] = measure(stage, model, primitives, validator, runs, variants, SEED, report, echo)
+        record["runs"] = measure(stage, model, primitives, validator, runs, variants, seed, report, echo)
     return record
 
 
@@ -187,13 +201,14 @@ def check_variants(variants: tuple[str, ...]) -> None:
 
 def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int, variants: tuple[str, ...],
             seed: int, report: Callable[[list[dict]], None], echo: Callable[[str], None]) -> list[dict]:
-    """Each run (its own seed and empty libraries) over the variants in VARIANTS order; `report` gets every row
-    so far after each recipe, the running one last."""
+    """Each run (its own seed, recipe order and empty libraries) over the variants in VARIANTS order; `report`
+    gets every row so far after each recipe, the running one last."""
     from cook2ltl.library import Library
 
     rows: list[dict] = []
     for index in range(runs):
-        model.seed = seed + index
+        run_seed = seed + index
+        run_stage = in_run_order(stage, run_seed)
         with tempfile.TemporaryDirectory() as folder:
             grown, fresh = Library(Path(folder) / "grown.sqlite"), Library(Path(folder) / "repair.sqlite")
             try:
@@ -204,8 +219,8 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                     library = fresh if name == REPAIR else grown if variant == Variant.AR_LIBRARY else None
                     translator = Translator(primitives, model, library, variant, validator=validator,
                                             repairs=REPAIRS if name == REPAIR else 0, approved_only=name == APPROVED)
-                    head = {"variant": name, "model": model.name, "seed": model.seed, "run": index + 1}
-                    rows.append(head | run_variant(stage, translator, lambda partial: report(rows + [head | partial])))
+                    head = {"variant": name, "model": model.name, "seed": run_seed}
+                    rows.append(head | run_variant(run_stage, translator, lambda partial: report(rows + [head | partial])))
                     report(rows)
                     echo(f"run {index + 1} {name:<18} calls {rows[-1]['llm_calls']:>4}  executability "
                          f"{rows[-1]['executability']:.3f}  {rows[-1]['wall_seconds'] / 60:.2f} min")
