@@ -169,3 +169,19 @@ def test_the_bound_is_stated_under_the_table():
     rows, _, _ = measured(variants=("AR+A", "AR*"))
     table = table1_markdown(rows, 2, library_bound(stage(), load_primitives("recipe")))
     assert "AR+𝔸 needs at least 3 calls: 0.75 × AR, 0.60 × AR*." in table
+
+
+def test_refused_plans_are_counted_by_kind_with_their_objects_left_out():
+    from cook2ltl.bench.refusals import problem_kind
+
+    holds = "the agent holds nothing; the plan must pick up {} first"
+    kinds = {problem_kind(LineProblem(1, f"put({food}, pot)", holds.format(food))) for food in ("meat", "mix_rhubarb")}
+    assert kinds == {"put: the agent holds nothing; the plan must pick up … first"}
+    assert problem_kind(LineProblem(4, "wait(ribs == cooked)", "goal state not reached: ribs never became cooked")) \
+        == "wait: goal state not reached: … never became …"
+    rows, _, _ = measured(variants=("AR+A", "AR+A repair"))
+    cold = next(row for row in rows if row["variant"] == "AR+A")
+    assert cold["refusals"] == {"turn_on: too short": 1}  # melt's one-line plan; fry had no plan to check
+    table = table1_markdown(rows, total=2)
+    assert "AR+𝔸 (library from empty), scripted, plans refused by the kitchen (1), by first problem: " \
+           "turn_on: too short (1)." in table

@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from cook2ltl import paths
+from cook2ltl.bench.refusals import refusals, refusals_note
 from cook2ltl.bench.results import mean_std, pm, write
 from cook2ltl.domain import ParsedRecipe
 from cook2ltl.errors import UserError
@@ -144,7 +145,7 @@ def _summary(totals: dict[str, float], translations: list[Translation], stage: S
         **{key: round(value, 3) if isinstance(value, float) else value for key, value in totals.items()},
         "executability": totals["admissible"] / planned if planned else 0.0,
         "line_executability": counts.executability, "new_reductions": counts.new_reductions,
-        "validated_rate": counts.validated_rate,
+        "validated_rate": counts.validated_rate, "refusals": refusals(translations),
         # The recipes' parse is shared by the variants of a run; each variant's time includes it.
         "wall_seconds": round(totals.get("seconds", 0.0) - totals["check_seconds"] + stage.parse_seconds, 3),
         "recipes_done": len(translations),
@@ -267,7 +268,10 @@ def table1_markdown(rows: list[dict], total: int, bound: dict | None = None) -> 
             f"| {pm([r['completion_tokens'] for r in complete], 0)} "
             f"| {pm([r['wall_seconds'] / 60 for r in complete])} | {paper_cell} |")
     notes = _ratios(groups, total)
-    return "\n".join(lines) + "\n" + notes + (bound_note(bound) if bound else "")
+    refused = "".join(refusals_note(f"{LABELS[variant]}, {model}", group[0].get("refusals", {}))
+                      for (variant, model), group in complete_groups.items() if group and variant in (COLD, REPAIR))
+    return ("\n".join(lines) + "\n" + notes + (bound_note(bound) if bound else "")
+            + (f"\n{refused}" if refused else ""))
 
 
 def bound_note(bound: dict) -> str:
