@@ -94,6 +94,9 @@ async def test_a_keymap_from_the_settings_moves_the_keys(make_app):
         assert isinstance(app.screen, LibraryScreen)
         await pilot.press("ctrl+t")
         assert isinstance(app.screen, RolloutScreen)
+        await pilot.press("f1")
+        shown = text(app.screen.query_one("#help-keys"))
+        assert "f9" in shown and "ctrl+t" in shown and "f3 " not in shown  # the help lists the keys in use
 
 
 def test_a_keymap_naming_no_binding_is_a_clear_error_before_the_app_starts(sandbox, monkeypatch, tmp_path):

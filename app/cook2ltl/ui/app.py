@@ -7,6 +7,7 @@ Nothing heavy is imported or loaded at start-up (the first screen paints before 
 from __future__ import annotations
 
 import traceback
+from dataclasses import replace
 from datetime import datetime
 from pathlib import Path
 from collections.abc import Mapping
@@ -72,7 +73,11 @@ class Cook2LTLApp(App):
                                     Binding("ctrl+q", "", "Quit")])]
         for title, screen in (("Translate", TranslateScreen), ("Library", LibraryScreen), ("Rollout", RolloutScreen)):
             sections.append((title, [*screen.BINDINGS, *WorkScreen.BINDINGS]))
-        self.push_screen(HelpScreen(sections))
+        self.push_screen(HelpScreen([(title, self._as_mapped(bindings)) for title, bindings in sections]))
+
+    def _as_mapped(self, bindings: list[Binding]) -> list[Binding]:
+        """The bindings with the keys the settings' [keymap] gave them, as the app answers them."""
+        return [replace(b, key=self.keymap[b.id]) if b.id in self.keymap else b for b in bindings]
 
     def show_error(self, error: BaseException) -> None:
         """A dialog for any failure: a UserError's message and hint, else the error in a line and the
