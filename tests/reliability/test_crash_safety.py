@@ -6,8 +6,7 @@ import sqlite3
 import subprocess
 import sys
 import time
-
-import pytest
+from collections.abc import Callable
 
 from cook2ltl.library import Library, Status
 from tests.models_required import require_models
@@ -42,25 +41,11 @@ def test_kill_9_during_a_translation_loses_nothing_approved_and_leaves_no_proces
     library = tmp_path / "library.sqlite"
     seeded_library(library)
     (tmp_path / "recipe.txt").write_text(RECIPE)
-    run = subprocess.Popen(
-        [sys.executable, "-m", "cook2ltl", "translate", str(tmp_path / "recipe.txt"), "--primitives", "ai2thor",
-         "--model", "smollm2-135m", "--library", str(library), "--validate", "--repairs", "0", "--max-lines", "4"],
-        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=tmp_path)
-    try:
-        deadline = time.monotonic() + 240
-        while entries(library) < len(APPROVED) + 2:  # mid-way: two new reductions stored, more to come
-            assert run.poll() is None, f"translate ended before it could be killed: {run.stderr.read()[-2000:]}"
-            assert time.monotonic() < deadline, "no new library entry within 240 s"
-            time.sleep(0.2)
-        started = children(run.pid)
-        assert started, "the kitchen check should have started the embedded kitchen"
-        run.send_signal(signal.SIGKILL)
-        run.wait(10)
-    finally:
-        if run.poll() is None:
-            run.kill()
-            run.wait()
-        run.stderr.close()
+    command = ["translate", str(tmp_path / "recipe.txt"), "--primitives", "ai2thor", "--model", "smollm2-135m",
+               "--library", str(library), "--validate", "--repairs", "0", "--max-lines", "4"]
+    # Mid-way: two new reductions stored, more to come.
+    started = kill_9_when(command, lambda: entries(library) >= len(APPROVED) + 2, 240, "new library entry", tmp_path)
+    assert started, "the kitchen check should have started the embedded kitchen"
     assert wait_until_gone(started, timeout=10) == set(), "a kitchen process outlived the killed translation"
 
     with sqlite3.connect(library) as conn:
@@ -90,21 +75,8 @@ def test_kill_9_during_a_large_import_leaves_all_or_nothing(tmp_path):
     source.close()
     library = tmp_path / "library.sqlite"
     seeded_library(library)
-    run = subprocess.Popen([sys.executable, "-m", "cook2ltl", "library", "import", str(tmp_path / "export.json"),
-                            "--library", str(library)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    try:
-        deadline = time.monotonic() + 120
-        while not writing(library):  # inside its one transaction
-            assert run.poll() is None, f"the import ended before it could be killed: {run.stderr.read()[-2000:]}"
-            assert time.monotonic() < deadline
-        time.sleep(0.05)
-        run.send_signal(signal.SIGKILL)
-        run.wait(10)
-    finally:
-        if run.poll() is None:
-            run.kill()
-            run.wait()
-        run.stderr.close()
+    command = ["library", "import", str(tmp_path / "export.json"), "--library", str(library)]
+    kill_9_when(command, lambda: writing(library), 120, "write transaction", tmp_path)  # inside its one transaction
     with sqlite3.connect(library) as conn:
         assert conn.execute("PRAGMA integrity_check").fetchall() == [("ok",)]
         count = conn.execute("SELECT count(*) FROM actions").fetchone()[0]
@@ -113,6 +85,27 @@ def test_kill_9_during_a_large_import_leaves_all_or_nothing(tmp_path):
     kept = {(e.verb, e.signature): e.body for e in store.entries() if e.status == Status.APPROVED}
     assert kept == APPROVED
     store.close()
+
+
+def kill_9_when(command: list[str], ready: Callable[[], bool], timeout: float, awaited: str, cwd) -> set[int]:
+    """Run `cook2ltl <command>` and kill -9 it as soon as `ready()` holds; the processes it had started then."""
+    run = subprocess.Popen([sys.executable, "-m", "cook2ltl", *command], stdout=subprocess.DEVNULL,
+                           stderr=subprocess.PIPE, cwd=cwd)
+    try:
+        deadline = time.monotonic() + timeout
+        while not ready():
+            assert run.poll() is None, f"{command[0]} ended before it could be killed: {run.stderr.read()[-2000:]}"
+            assert time.monotonic() < deadline, f"no {awaited} within {timeout} s"
+            time.sleep(0.05)
+        started = children(run.pid)
+        run.send_signal(signal.SIGKILL)
+        run.wait(10)
+        return started
+    finally:
+        if run.poll() is None:
+            run.kill()
+            run.wait()
+        run.stderr.close()
 
 
 def writing(path) -> bool:
