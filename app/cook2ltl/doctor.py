@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterator
 
-from cook2ltl import offline, paths
+from cook2ltl import offline
 from cook2ltl.errors import UserError
 from cook2ltl.models.manifest import Source, State, load_manifest, model_path, state_of
 

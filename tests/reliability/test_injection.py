@@ -2,8 +2,6 @@
 span and dependency models parse hostile text, the real tiny model reduces every action (AR*), and every
 line of every raw completion is a call the grammar's vocabulary admits."""
 
-import pytest
-
 from cook2ltl.models.manifest import load_manifest, model_path
 from cook2ltl.pipeline import ActionDone, Finished, Translator, Variant, run
 from cook2ltl.reduce.body import read_body

@@ -4,7 +4,6 @@ bodies that are stored, imported, edited and looked up without ever running."""
 import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 

@@ -13,7 +13,7 @@ from cook2ltl.kitchen.launcher import KitchenUnavailable
 from cook2ltl.kitchen.names import UnknownObject
 from cook2ltl.kitchen.planning import Planner
 from cook2ltl.kitchen.tasks import find_task
-from cook2ltl.kitchen.trial import TrialDone, run_trial
+from cook2ltl.kitchen.trial import run_trial
 from cook2ltl.library import Library
 from cook2ltl.pipeline import Translator
 from cook2ltl.reduce.primitives import load_primitives

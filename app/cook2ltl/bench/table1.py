@@ -31,7 +31,7 @@ from pathlib import Path
 
 from cook2ltl import paths
 from cook2ltl.bench.refusals import refusals, refusals_note
-from cook2ltl.bench.results import mean_std, pm, write
+from cook2ltl.bench.results import pm, write
 from cook2ltl.domain import ParsedRecipe
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline import Finished, Translation, Translator, Variant, rates, translate
