@@ -10,7 +10,9 @@ With a `validator`, every new reduction is first run in the kitchen; a failing o
 the failure as feedback, at most `repairs` times, and cached with its validation (passed, failed or
 unchecked) as a pending entry: only a reviewer approves. Library hits are not validated again: the entry
 was checked when it was learnt and carries that result, and reuse must stay a lookup (the paper's point);
-a lab that wants only reviewed plans sets `approved_only`.
+a lab that wants only reviewed plans sets `approved_only`. A reduction with no admissible plan is cached too,
+as an entry with an empty body: the action is then not sent to the model again (until a reviewer rejects
+the entry), and the lab sees which body to write.
 """
 
 from __future__ import annotations
@@ -37,6 +39,8 @@ from cook2ltl.reduce.validation import PlanValidator, Validation
 from cook2ltl.translate.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
+
+NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
 
 
 class Variant(StrEnum):
@@ -83,6 +87,7 @@ class Stats:
     actions: int = 0
     primitive: int = 0
     library_hits: int = 0
+    no_plan_hits: int = 0  # of the library hits, entries recording that the model wrote no admissible plan
     llm_calls: int = 0
     prompt_tokens: int = 0
     completion_tokens: int = 0
@@ -230,6 +235,11 @@ class _Run:
         stale = None
         if self.uses_library:
             entry = self.t.library.lookup(primitives.name, action.verb, action.signature, self.t.approved_only)
+            if entry is not None and not entry.has_plan:  # the model found no plan before: not asked again
+                self._count(library_hits=1, no_plan_hits=1)
+                reduction = Reduction(action, (), Source.LIBRARY, entry_id=entry.id)
+                return ActionResult(frame_index, reduction, (), entry_validation=entry.validation,
+                                    entry_problems=entry.problems), None
             body = instantiate(entry.body, placeholders(action)) if entry else None
             plan = self._expand(body) if body is not None else None
             if plan:
@@ -243,18 +253,26 @@ class _Run:
                                  self.t.validator, self.t.repairs)
         self._count_reductions(checked)
         reduction, plan, validation = checked.reduction, checked.plan, checked.validation
-        if plan and self.uses_library and not self._awaiting_review(action):
-            entry = self.t.library.add(primitives.name, action.verb, action.signature,
-                                       parametrize(reduction.body, action), self.t.model.name,
-                                       reduction.prompt_hash, replacing=stale,
-                                       validation=validation.status if validation else "unchecked",
-                                       problems=validation.messages() if validation else (),
-                                       example=placeholders(action))
-            reduction = replace(reduction, entry_id=entry.id)
-            self._count(new_entries=1)
-            self._refresh()
+        if self.uses_library and not self._awaiting_review(action):
+            reduction = self._learn(action, reduction, plan, validation, stale)
         result = ActionResult(frame_index, reduction, plan, validation, checked.failed)
         return result, plan_element(plan, primitives) if plan else None
+
+    def _learn(self, action: Action, reduction: Reduction, plan: tuple[Call, ...], validation: Validation | None,
+               stale: int | None) -> Reduction:
+        """Cache a new reduction as a pending entry; without a plan, an empty body that records it."""
+        if plan:
+            body, status = parametrize(reduction.body, action), validation.status if validation else "unchecked"
+            problems = validation.messages() if validation else ()
+        else:
+            body, status, problems = "", "failed", (NO_PLAN_PROBLEM,)
+        entry = self.t.library.add(self.t.primitives.name, action.verb, action.signature, body, self.t.model.name,
+                                   reduction.prompt_hash, replacing=stale, validation=status, problems=problems,
+                                   example=placeholders(action))
+        self._count(new_entries=1)
+        if plan:
+            self._refresh()
+        return replace(reduction, entry_id=entry.id)
 
     def _count_reductions(self, checked: Checked) -> None:
         for reduction in checked.model_calls:

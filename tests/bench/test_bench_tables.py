@@ -63,7 +63,9 @@ def test_each_variant_counts_calls_as_the_paper_defines_it():
     assert [row["variant"] for row in rows] == list(VARIANTS)
     # AR+A: boil egg, fry, melt reduced; put a primitive; boil potato from the library.
     assert by_variant["AR+A"]["llm_calls"] == 3 and by_variant["AR+A"]["library_hits"] == 1
-    assert by_variant["AR+A warm"]["llm_calls"] == 1  # only fry, which never made it into the library
+    # Warm: all from the library, fry too (its entry records that the model wrote no plan): no call at all.
+    warm = by_variant["AR+A warm"]
+    assert (warm["llm_calls"], warm["library_hits"], warm["no_plan_hits"]) == (0, 4, 1)
     assert by_variant["AR"]["llm_calls"] == 4 and by_variant["AR*"]["llm_calls"] == 5
     assert model.calls == sum(row["llm_calls"] + row["repair_calls"] for row in rows)
     assert {row["actions"] for row in rows} == {5}

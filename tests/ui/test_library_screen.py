@@ -153,3 +153,19 @@ async def test_save_runs_the_body_in_the_kitchen_and_a_refused_body_needs_a_seco
         await pilot.press("ctrl+s")
         await settle(pilot)
         assert (library.get(1).version, library.get(1).validation) == (3, "passed")
+
+
+async def test_an_entry_without_a_plan_is_shown_and_cannot_be_approved(make_app, library):
+    melt = library.add("recipe", "melt", ("what",), "", "qwen", "h4", validation="failed",
+                       problems=("the model wrote no admissible plan",))
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f3")
+        await settle(pilot)
+        await choose(pilot, "melt")
+        detail = text(app.screen.query_one(EntryDetail))
+        assert "(no plan)" in detail and "no admissible plan" in detail
+        await pilot.press("a")
+        await settle(pilot)
+        assert not isinstance(app.screen, ConfirmDialog)  # nothing to approve, so nothing to confirm
+        assert library.get(melt.id).status == Status.PENDING

@@ -49,6 +49,8 @@ def list_command(library: Optional[Path] = LibraryOption,
         from cook2ltl.errors import UserError
 
         raise UserError(f"--status {status!r} is not one of {', '.join(STATUS_STYLE)}.", "leave it out to list all.")
+    from cook2ltl.library.store import NO_PLAN
+
     store = _open(library)
     entries = store.search(search) if search else store.entries()
     table = Table("id", "set", "action", "status", "check", "v", "reviewed", "model", title=str(store.path))
@@ -56,7 +58,8 @@ def list_command(library: Optional[Path] = LibraryOption,
         if status and entry.status.value != status:
             continue
         reviewed = f"{entry.reviewed_by} {entry.reviewed_at[:10]}" if entry.reviewed_by else ""
-        table.add_row(str(entry.id), entry.primitives, escape(entry.action), _status(entry.status.value),
+        action = entry.action if entry.has_plan else f"{entry.action} {NO_PLAN}"
+        table.add_row(str(entry.id), entry.primitives, escape(action), _status(entry.status.value),
                       f"[{CHECK_STYLE[entry.validation]}]{entry.validation}[/]", str(entry.version),
                       escape(reviewed), escape(entry.model))
     if table.row_count:
@@ -69,6 +72,8 @@ def list_command(library: Optional[Path] = LibraryOption,
 @library_app.command("show")
 def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
     """One entry: body, status and reviewer, kitchen check and its problems, provenance, version."""
+    from cook2ltl.library.store import shown_body
+
     entry = _open(library).get(entry_id)
     console = Console(highlight=False)
     review = (f" by {escape(entry.reviewed_by)} at {entry.reviewed_at}" if entry.reviewed_by
@@ -78,7 +83,7 @@ def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None
     for problem in entry.problems:
         console.print(f"  [red]✗[/red] {escape(problem)}")
     console.print()
-    console.print(escape(entry.body))
+    console.print(escape(shown_body(entry.body)))
     console.print()
     if entry.example:
         console.print("[dim]learnt from " + escape(", ".join(f"{k} = {v}" for k, v in entry.example)) + "[/dim]")
@@ -186,6 +191,8 @@ def _kitchen_check(entry, body, primitive_set, verbs):
 @library_app.command("history")
 def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
     """Every body the entry had, who wrote it and when, and who approved or rejected which version."""
+    from cook2ltl.library.store import shown_body
+
     store = _open(library)
     entry = store.get(entry_id)
     table = Table("v", "at", "by", "check", "note", "body", title=f"entry {entry_id} {escape(entry.action)}",
@@ -193,7 +200,7 @@ def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> N
     for version in store.history(entry_id):
         table.add_row(str(version.version), version.at[:16].replace("T", " "), escape(version.author),
                       f"[{CHECK_STYLE[version.validation]}]{version.validation}[/]", escape(version.note),
-                      escape(version.body))
+                      escape(shown_body(version.body)))
     console = Console(highlight=False)
     console.print(table)
     for review in store.reviews(entry_id):

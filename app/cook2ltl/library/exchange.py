@@ -17,7 +17,10 @@ Import compares each entry with this library's entries for the same action (prim
   to it as a new version (still pending, for review);
 - a rejected entry in the file whose body is live here: a conflict, for the lab to review; other rejected
   entries are added as records;
-- a live entry in the file whose body was rejected here: a conflict, kept rejected.
+- a live entry in the file whose body was rejected here: a conflict, kept rejected;
+- an entry with no plan (an empty body, see `store`) in the file, for an action with a live plan here: a
+  conflict, even with `replace_pending` (no plan never replaces one).
+An entry with no plan is never approved, so a file that approves one is refused.
 The whole file is checked before anything is written, and it is imported in one transaction.
 """
 
@@ -119,6 +122,8 @@ def _outcome(entry: LibraryEntry, here: list[LibraryEntry],
         return ADDED, None, ""
     if live.status == Status.APPROVED:
         return CONFLICT, live, f"entry {live.id} is approved here with another body; kept"
+    if not entry.has_plan:
+        return CONFLICT, live, f"the file has no plan for it; entry {live.id} keeps its body"
     if not replace_pending:
         return CONFLICT, live, (f"entry {live.id} is pending here with another body; kept "
                                 "(--replace-pending adds the file's body to it as a new version)")
@@ -177,9 +182,12 @@ def _read_entry(raw, where: str) -> Exported:
     numbers = [v.version for v in versions]
     if numbers != sorted(set(numbers)) or versions[-1].body != body:
         raise UserError(f"{where}: \"history\" must go up in version numbers and end with the current body.", HINT)
+    status = Status(fields.choice("status", tuple(Status)))
+    if status == Status.APPROVED and not body.strip():
+        raise UserError(f"{where}: an entry with no plan (an empty \"body\") cannot be approved.", HINT)
     entry = LibraryEntry(
         id=0, primitives=fields.text("primitives"), verb=fields.text("verb"), signature=signature, body=body,
-        status=Status(fields.choice("status", tuple(Status))), model=fields.text("model"),
+        status=status, model=fields.text("model"),
         prompt_hash=fields.get("prompt_hash", str), created=fields.time("created"),
         validation=fields.choice("validation", VALIDATIONS), problems=fields.words("problems"),
         reviewed_by=fields.get("reviewed_by", str, optional=True),
@@ -253,7 +261,8 @@ class _Fields:
         return value
 
     def body(self, name: str) -> str:
-        value = self.text(name)
+        """Calls one a line; empty for an entry with no plan."""
+        value = self.get(name, str)
         _, unread = read_body(value)
         if unread:
             raise UserError(f"{self.where}: \"{name}\" has a line that is not a call: {unread[0]!r}.", HINT)

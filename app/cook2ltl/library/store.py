@@ -5,7 +5,9 @@ it fills), the body with `$what`-style placeholders, a review status, the kitche
 where it came from. At most one row per (primitive set, verb, signature) is live (not rejected); every
 body an entry ever had is kept in `versions`, every approval and rejection in `reviews`. A model's
 reduction is stored pending and never approved by the program: a person approves it, and that approval
-wins over any later reduction. The schema and its migrations are in `schema`. Each thread gets its own
+wins over any later reduction. An entry with an empty body records that the model wrote no admissible plan:
+it spares asking the model again and shows the lab a body to write; it is never approved, and never a verb
+that other bodies call. The schema and its migrations are in `schema`. Each thread gets its own
 connection (sqlite3 refuses to share one), WAL lets a reader and a writer work side by side, and every
 write is one transaction.
 """
@@ -30,8 +32,10 @@ from cook2ltl.library import versions
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
 from cook2ltl.library.versions import Review, Version, checked, now
 
-__all__ = ["SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer"]
+__all__ = ["NO_PLAN", "SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer",
+           "shown_body"]
 REPLACER = "cook2ltl"  # who rejects a pending entry that a new reduction replaces
+NO_PLAN = "(no plan)"  # how an empty body is shown
 SQLITE_INTEGERS = (-2**63, 2**63 - 1)  # the ids sqlite can store
 
 
@@ -63,6 +67,15 @@ class LibraryEntry:
     def action(self) -> str:
         return f"{self.verb}({', '.join(self.signature)})"
 
+    @property
+    def has_plan(self) -> bool:
+        """False for the record of a reduction with no admissible plan (an empty body)."""
+        return bool(self.body.strip())
+
+
+def shown_body(body: str) -> str:
+    return body if body.strip() else NO_PLAN
+
 
 def reviewer() -> str:
     """Who is at the keyboard: $COOK2LTL_USER, else the login name."""
@@ -93,9 +106,9 @@ class Library:
         return next((_entry(row) for row in rows), None)
 
     def live(self, primitives: str, approved_only: bool = False) -> tuple[LibraryEntry, ...]:
-        """The entries a translation may use, oldest first: their verbs join later prompts."""
-        rows = self._db()[TABLE].rows_where(f"primitives = ? AND {_usable(approved_only)}", [primitives],
-                                            order_by="id")
+        """The entries whose verbs later prompts and bodies may call, oldest first: those with a plan."""
+        rows = self._db()[TABLE].rows_where(f"primitives = ? AND trim(body) != '' AND {_usable(approved_only)}",
+                                            [primitives], order_by="id")
         return tuple(_entry(row) for row in rows)
 
     def entries(self) -> tuple[LibraryEntry, ...]:
@@ -162,10 +175,14 @@ class Library:
     def set_status(self, entry_id: int, status: Status | str, by: str | None = None,
                    force: bool = False) -> LibraryEntry:
         """Approve, reject (or return to pending) an entry, recording who and when. An entry whose body failed
-        the kitchen check is approved only with `force`."""
+        the kitchen check is approved only with `force`; one without a plan (an empty body) never."""
         status = Status(status)
         with self._writing():
             row = self._row(entry_id)
+            if status == Status.APPROVED and not _entry(row).has_plan:
+                raise UserError(f"Entry {entry_id} ({_entry(row).action}) has no plan: there is nothing to approve.",
+                                f"write its body with `cook2ltl library edit {entry_id} --body-file FILE`, "
+                                "then approve it.")
             if status == Status.APPROVED and row["validation"] == "failed" and not force:
                 raise UserError(f"Entry {entry_id} ({_entry(row).action}) failed the kitchen check: "
                                 f"{'; '.join(json.loads(row['problems'])) or 'no details'}.",

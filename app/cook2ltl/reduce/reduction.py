@@ -60,7 +60,8 @@ def expand(calls: Sequence[Call], primitives: PrimitiveSet, find: Callable[[str,
             expanded.append(call)
             continue
         verb = find(call.name, len(call.args))
-        inner = instantiate(verb.body, bind(verb.signature, call.args)) if verb else None
+        has_body = verb is not None and verb.body.strip()  # an entry without a plan is no verb to call
+        inner = instantiate(verb.body, bind(verb.signature, call.args)) if has_body else None
         inner = expand(inner, primitives, find, depth + 1) if inner is not None else None
         if inner is None:
             return None

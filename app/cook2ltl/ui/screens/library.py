@@ -169,6 +169,9 @@ class LibraryScreen(WorkScreen):
         entry = self._reviewable()
         if entry is None:
             return
+        if not entry.has_plan:
+            self.notify(f"#{entry.id} has no plan: nothing to approve. Edit it to write its body.", severity="warning")
+            return
         if entry.validation != "failed":
             self._write(f"approving #{entry.id}", entry.id, "approve")
             return

@@ -39,9 +39,11 @@ class EntryDetail(Static):
 
 
 def _body(entry: LibraryEntry) -> Content:
+    from cook2ltl.library.store import shown_body
+
     title = Content(entry.action).stylize("bold") + Content(f"  #{entry.id} · version {entry.version} · "
                                                             f"{entry.primitives} primitives").stylize("$text-muted")
-    return title + Content("\n") + Content(entry.body).stylize("$text-accent")
+    return title + Content("\n") + Content(shown_body(entry.body)).stylize("$text-accent")
 
 
 def _review(entry: LibraryEntry) -> Content:
@@ -59,6 +61,8 @@ def _review(entry: LibraryEntry) -> Content:
 
 
 def _history(versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> Content:
+    from cook2ltl.library.store import shown_body
+
     lines = [Content("history").stylize("bold")]
     for version in reversed(versions):  # newest first
         note = f" · {version.note}" if version.note else ""
@@ -67,7 +71,7 @@ def _history(versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> Cont
         lines.append(Content(f"v{version.version:<3}").stylize("bold") + Content(f"{version.at} {version.author}")
                      + Content(note).stylize("$text-muted") + Content("  ") + check_content(version.validation))
         if version is not versions[-1]:
-            lines.append(Content("    " + version.body.replace("\n", " · ")).stylize("$text-muted"))
+            lines.append(Content("    " + shown_body(version.body).replace("\n", " · ")).stylize("$text-muted"))
     return Content("\n").join(lines)
 
 
