@@ -7,6 +7,7 @@ from contextlib import contextmanager
 import pytest
 from typer.testing import CliRunner
 
+from cook2ltl import paths
 from cook2ltl.cli import app
 from cook2ltl.kitchen import launcher, planning
 from cook2ltl.kitchen.launcher import KitchenUnavailable
@@ -18,6 +19,7 @@ from cook2ltl.library import Library
 from cook2ltl.pipeline import Translator
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
+from tests.models_required import require_models
 from tests.reduce.fake_model import ScriptedModel
 
 SPANS = {
@@ -29,6 +31,7 @@ MICROWAVE = "pick_up(potato)\nopen(microwave)\nput(potato, microwave)\nclose(mic
 # What the default model wrote for it once: no turn_on, so the potato stays raw.
 MICROWAVE_UNPLUGGED = "open(microwave)\npick_up(potato)\nput(potato, microwave)\nclose(microwave)"
 runner = CliRunner()
+MODEL_CACHE = paths.model_cache_dir()  # read before the module's fixtures move HOME
 
 
 def stopped(controller) -> bool:
@@ -77,10 +80,13 @@ def test_a_plan_that_never_turns_the_microwave_on_satisfies_its_formula_but_not_
 def scripted_planner(monkeypatch, library):
     """`cook2ltl rollout TASK` plans with the scripted model instead of the production models."""
     @contextmanager
-    def fake(model, library_path, variant):
+    def fake(model, library_path, variant, validate, repairs):
+        asked.append((validate, repairs))
         yield planner({"microwave": MICROWAVE, "refrigerate": "pick_up(apple)\nput(apple, fridge)"}, library)[0]
 
+    asked = []
     monkeypatch.setattr(planning, "open_planner", fake)
+    return asked
 
 
 @pytest.fixture
@@ -111,6 +117,9 @@ def test_the_command_plans_runs_and_reports_json(scripted_planner, launched):
     assert report["seconds"]["total"] == pytest.approx(report["seconds"]["plan"] + report["seconds"]["rollout"],
                                                        abs=0.01)
     assert [stopped(c) for c in launched] == [True]
+    assert scripted_planner == [(True, 2)]  # new reductions are checked in the kitchen by default
+    runner.invoke(app, ["rollout", "Microwave the potato", "--json", "--no-validate", "--repairs", "1"])
+    assert scripted_planner[-1] == (False, 1)
 
 
 def test_the_command_shows_a_failed_plan_live_and_exits_1(scripted_planner, launched):
@@ -154,3 +163,17 @@ def test_the_command_lists_the_tasks():
     listed = json.loads(result.output)
     assert listed[0] == {"id": "microwave-potato", "instruction": "Microwave the potato.", "scene": "FloorPlan1",
                          "category": "heat", "source": "paper, Table II", "goal": ["Potato: isCooked = true"]}
+
+
+def test_the_real_planner_checks_new_reductions_in_the_kitchen_before_caching(tmp_path, launched, monkeypatch):
+    monkeypatch.setenv("COOK2LTL_MODEL_CACHE", str(MODEL_CACHE))  # HOME is a temp folder in this module
+    require_models("smollm2-135m", "gliner-cook2ltl", "spacy-sm")
+    path = tmp_path / "library.sqlite"
+    result = runner.invoke(app, ["rollout", "microwave-potato", "--model", "smollm2-135m", "--library", str(path),
+                                 "--repairs", "0", "--json"])
+    assert result.exit_code in (0, 1), result.output
+    store = Library(path)
+    checks = {entry.validation for entry in store.entries()}
+    store.close()
+    assert checks and checks <= {"passed", "failed"}  # never cached unchecked
+    assert all(stopped(c) for c in launched)

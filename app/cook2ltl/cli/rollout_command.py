@@ -41,6 +41,10 @@ def rollout_command(
                                            " else library.sqlite in the user data folder)."),
     variant: Variant = typer.Option(Variant.AR_LIBRARY, "--variant", case_sensitive=False,
                                     help="AR passes primitives through; AR+A also reuses and grows the library."),
+    validate: bool = typer.Option(True, "--validate/--no-validate", help="AR+A: check a new reduction in a kitchen "
+                                  "of its own before it is cached, as `translate` does."),
+    repairs: int = typer.Option(2, "--repairs", min=0, max=10, help="Times a plan the check refuses goes back to "
+                                "the model."),
     list_tasks: bool = typer.Option(False, "--list", help="List the tasks and exit."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
@@ -66,7 +70,7 @@ def rollout_command(
         plan = None
         if formula is None:
             with errors.status(f"planning “{task.instruction}” with {model} …"), \
-                    open_planner(model, library, variant) as planner:
+                    open_planner(model, library, variant, validate, repairs) as planner:
                 plan = planner.plan(task.instruction)
             formula = plan.formula
         console = None if as_json else Console()

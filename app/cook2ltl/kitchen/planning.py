@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -60,24 +60,29 @@ class Planner:
 
 
 @contextmanager
-def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR_LIBRARY) -> Iterator[Planner]:
-    """The production planner; the library file (default: the user's) is closed on exit."""
+def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR_LIBRARY, validate: bool = True,
+                 repairs: int = 2) -> Iterator[Planner]:
+    """The production planner; the library file (default: the user's) and the kitchen that checks new
+    reductions before they are cached (AR+A with `validate`, as `cook2ltl translate`) are closed on exit."""
     from .. import paths
     from ..library import Library
     from ..reduce.llm import load_model
     from ..reduce.primitives import load_primitives
+    from ..reduce.validation import KitchenValidator
     from ..settings import load_settings
     from ..stack import dependency_parser, span_extractor
 
     primitives = load_primitives(PRIMITIVES)
     language_model = load_model(model)
-    store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
-    try:
-        translator = Translator(primitives, language_model, store, variant)
+    with ExitStack() as closing:
+        store = validator = None
+        if variant == Variant.AR_LIBRARY:
+            store = Library(library or paths.library_file())
+            closing.callback(store.close)
+            if validate:
+                validator = closing.enter_context(KitchenValidator(primitives))
+        translator = Translator(primitives, language_model, store, variant, validator=validator, repairs=repairs)
         yield Planner(translator, span_extractor(load_settings()), dependency_parser())
-    finally:
-        if store is not None:
-            store.close()
 
 
 def plan_json(plan: Plan) -> dict:
