@@ -147,8 +147,8 @@ def edit_command(entry_id: int,
     for problem in checked.problems:
         console.print(f"  [red]✗[/red] {escape(problem)}")
     if checked.validation == "failed" and not keep_failing:
-        errors.print(f"[bold red]the body fails the kitchen check[/bold red]; nothing saved "
-                     f"(--keep-failing saves it anyway)")
+        errors.print("[bold red]the body fails the kitchen check[/bold red]; nothing saved "
+                     "(--keep-failing saves it anyway)")
         raise typer.Exit(1)
     edited = store.edit(entry_id, body, _by(by), checked.validation, checked.problems, note)
     console.print(f"entry {entry_id} {escape(edited.action)}: version {edited.version}, kitchen check "
