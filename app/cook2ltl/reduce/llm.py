@@ -24,7 +24,6 @@ from cook2ltl.reduce.model import Usage
 from cook2ltl.settings import Limits
 
 DEFAULT_MODEL = "qwen2.5-coder-1.5b"  # chosen by measurement: see the README's "Action reduction"
-SEED = 4242
 CONTEXT_TOKENS = 4096
 DEFAULT_TIME_LIMIT = Limits.llm_seconds  # seconds; load_model takes the settings' [limits] llm_seconds
 
@@ -57,7 +56,7 @@ class LanguageModel(Protocol):
 
 
 class LlamaModel:
-    """A GGUF model run by llama-cpp-python at temperature 0 with a fixed seed.
+    """A GGUF model run by llama-cpp-python, decoding greedily under the grammar (cook2ltl.reduce.decoding).
 
     The static part is always evaluated on its own and kept: later prompts evaluate only their dynamic
     tail. Evaluating it the same way every time also keeps results independent of what was reduced before
@@ -65,11 +64,10 @@ class LlamaModel:
     the evaluated static part is saved to disk and restored by later processes.
     """
 
-    def __init__(self, name: str, path: Path, seed: int = SEED, threads: int | None = None,
+    def __init__(self, name: str, path: Path, threads: int | None = None,
                  state_dir: Path | None = None, time_limit: float = DEFAULT_TIME_LIMIT) -> None:
         self.name = name
         self.path = path
-        self.seed = seed
         self.threads = threads or os.cpu_count() or 1
         self.state_dir = state_dir
         self.restored = False  # whether the last static part came from disk
@@ -179,7 +177,7 @@ class LlamaModel:
             except ImportError as error:
                 raise UserError("llama-cpp-python is not installed.", "install the `llm` extra: pip install -e '.[llm]'.") from error
             self._llama = Llama(model_path=str(self.path), n_ctx=CONTEXT_TOKENS, n_threads=self.threads,
-                                seed=self.seed, verbose=False)
+                                verbose=False)
         return self._llama
 
 
