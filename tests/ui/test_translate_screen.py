@@ -206,3 +206,25 @@ async def test_an_empty_recipe_is_not_run(make_app, services):
         await pilot.press("ctrl+r")
         await pilot.pause()
         assert not app.screen.busy and services.make_spans.calls == 0
+
+
+async def test_lab_mode_reuses_approved_entries_only(make_app, model, services):
+    from cook2ltl.library import Library
+
+    app = make_app()
+    async with app.run_test(size=SIZE) as pilot:
+        app.screen.query_one("#variant").value = "AR+A approved-only"
+        await pilot.pause()
+        app.screen.query_one("#validate", Checkbox).value = False
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        # boil(egg) is learnt as a pending entry, so boil(potato) goes to the model again and is not cached.
+        assert [row[3] for row in rows(app.screen, "#reductions-table")] == ["new #1", "primitive", "new"]
+        assert model.calls == 2
+        store = Library(services.library_path)
+        store.set_status(1, "approved", by="tester", force=True)
+        store.close()
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        assert [row[3] for row in rows(app.screen, "#reductions-table")] == ["cached #1", "primitive", "cached #1"]
+        assert model.calls == 2

@@ -31,6 +31,7 @@ class TranslateRequest:
     variant: str  # a pipeline.Variant value
     model: str
     validate: bool = True  # run new reductions in the kitchen before caching them (repairing failures)
+    approved_only: bool = False  # lab mode: reuse approved library entries only
 
 
 @dataclass(frozen=True)
@@ -65,7 +66,8 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
     spans, dependencies = services.spans(), services.dependencies()
     library = services.library() if variant == Variant.AR_LIBRARY else None
     validator = services.validator(primitives) if request.validate else None
-    translator = Translator(primitives, services.model(request.model, cancel), library, variant, validator=validator)
+    translator = Translator(primitives, services.model(request.model, cancel), library, variant, validator=validator,
+                            approved_only=request.approved_only)
     yield WorkProgress("parsing (the span model loads on first use) …")
     total = 0
     for event in run(request.text, spans, dependencies, translator, cancel):
@@ -125,7 +127,10 @@ def _planner(services: Services, model: str, cancel: threading.Event):
     from cook2ltl.pipeline import Translator
     from cook2ltl.reduce.primitives import load_primitives
 
-    translator = Translator(load_primitives(PRIMITIVES), services.model(model, cancel), services.library())
+    primitives = load_primitives(PRIMITIVES)
+    # New reductions are checked and repaired before they are cached, as when translating.
+    translator = Translator(primitives, services.model(model, cancel), services.library(),
+                            validator=services.validator(primitives))
     return Planner(translator, services.spans(), services.dependencies())
 
 

@@ -25,7 +25,9 @@ from cook2ltl.ui.widgets.status import WorkStatus
 from cook2ltl.ui.widgets.steps_view import StepsView
 
 PRIMITIVE_SETS = (("recipe primitives", "recipe"), ("AI2-THOR primitives", "ai2thor"))
-VARIANTS = (("AR+𝔸 (library)", "AR+A"), ("AR (no library)", "AR"), ("AR* (all by model)", "AR*"))
+LAB_MODE = "AR+A approved-only"  # AR+A reusing approved entries only
+VARIANTS = (("AR+𝔸 (library)", "AR+A"), ("AR+𝔸, approved only", LAB_MODE), ("AR (no library)", "AR"),
+            ("AR* (all by model)", "AR*"))
 
 
 class TranslateScreen(WorkScreen):
@@ -50,8 +52,9 @@ class TranslateScreen(WorkScreen):
             yield Select(PRIMITIVE_SETS, value="recipe", allow_blank=False, id="primitives",
                          tooltip="The robot's primitive actions: the paper's recipe set, or AI2-THOR's (rollouts).")
             yield Select(VARIANTS, value="AR+A", allow_blank=False, id="variant",
-                         tooltip="The paper's ablation: AR+𝔸 reuses and grows the action library; AR passes "
-                                 "primitives through; AR* asks the model for every action.")
+                         tooltip="The paper's ablation: AR+𝔸 reuses and grows the action library (approved only: "
+                                 "reuses only entries a reviewer approved); AR passes primitives through; AR* asks "
+                                 "the model for every action.")
             models = self.app.services.model_names
             yield Select([(name, name) for name in models], value=self.app.model_name, allow_blank=False, id="model")
             yield Checkbox("kitchen check", True, id="validate",
@@ -90,7 +93,7 @@ class TranslateScreen(WorkScreen):
         if event.select.id == "model":
             self.app.model_name = event.value
         elif event.select.id == "variant":  # as on the command line: checked by default where entries are cached
-            self.query_one("#validate", Checkbox).value = event.value == "AR+A"
+            self.query_one("#validate", Checkbox).value = event.value in ("AR+A", LAB_MODE)
 
     def action_run(self) -> None:
         if self.busy:  # the palette can ask while a run is on
@@ -99,9 +102,10 @@ class TranslateScreen(WorkScreen):
         if not text.strip():
             self.notify("Paste a recipe or open a file first.", severity="warning")
             return
+        chosen = self.query_one("#variant", Select).value
         request = TranslateRequest(text, self.query_one("#primitives", Select).value,
-                                   self.query_one("#variant", Select).value, self.query_one("#model", Select).value,
-                                   self.query_one("#validate", Checkbox).value)
+                                   "AR+A" if chosen == LAB_MODE else chosen, self.query_one("#model", Select).value,
+                                   self.query_one("#validate", Checkbox).value, approved_only=chosen == LAB_MODE)
         self.query_one(StepsView).update("parsing …")
         self.query_one(ReductionsTable).clear()
         self.query_one("#reduction-summary", Static).update("")
