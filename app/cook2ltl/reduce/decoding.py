@@ -28,7 +28,8 @@ def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
                   keep_going: Callable[[list[int]], bool]) -> Iterator[int]:
     """Yield the tokens of the greedy completion of `prompt` that `grammar` admits, up to an end-of-generation
     token or `max_tokens`. Evaluation goes on from the tokens `llama` already holds (a shared prefix);
-    `keep_going(tokens so far, the next one included)` may end it before that next token is yielded."""
+    `keep_going(tokens so far)` may end it after any token. The token that ends it is kept: one token can
+    close a line and open the next (")\n"), and cutting it would leave the line unfinished."""
     import llama_cpp
 
     vocab = llama._model.vocab
@@ -47,11 +48,13 @@ def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
             scores = np.ctypeslib.as_array(llama_cpp.llama_get_logits_ith(llama._ctx.ctx, -1),
                                            shape=(vocabulary_size,))
             token = _best_admitted(sampler, scores)
-            if token is None or llama_cpp.llama_vocab_is_eog(vocab, token) or not keep_going(generated + [token]):
+            if token is None or llama_cpp.llama_vocab_is_eog(vocab, token):
                 return
             llama_cpp.llama_sampler_accept(sampler, token)
             generated.append(token)
             yield token
+            if not keep_going(generated):
+                return
             llama.eval([token])
     finally:
         llama_cpp.llama_sampler_free(sampler)
