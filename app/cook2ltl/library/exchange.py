@@ -182,17 +182,16 @@ def _read_entry(raw, where: str) -> Exported:
     numbers = [v.version for v in versions]
     if numbers != sorted(set(numbers)) or versions[-1].body != body:
         raise UserError(f"{where}: \"history\" must go up in version numbers and end with the current body.", HINT)
-    status = Status(fields.choice("status", tuple(Status)))
-    if status == Status.APPROVED and not body.strip():
-        raise UserError(f"{where}: an entry with no plan (an empty \"body\") cannot be approved.", HINT)
     entry = LibraryEntry(
         id=0, primitives=fields.text("primitives"), verb=fields.text("verb"), signature=signature, body=body,
-        status=status, model=fields.text("model"),
+        status=Status(fields.choice("status", tuple(Status))), model=fields.text("model"),
         prompt_hash=fields.get("prompt_hash", str), created=fields.time("created"),
         validation=fields.choice("validation", VALIDATIONS), problems=fields.words("problems"),
         reviewed_by=fields.get("reviewed_by", str, optional=True),
         reviewed_at=fields.time("reviewed_at", optional=True), example=fields.example(), version=numbers[-1],
     )
+    if entry.status == Status.APPROVED and not entry.has_plan:
+        raise UserError(f"{where}: an entry with no plan (an empty \"body\") cannot be approved.", HINT)
     reviews = tuple(_read_review(item, f"{where}, review {n}", numbers)
                     for n, item in enumerate(fields.get("reviews", list, optional=True) or (), start=1))
     return Exported(entry, versions, reviews)

@@ -31,6 +31,7 @@ from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.library import versions
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
 from cook2ltl.library.versions import Review, Version, checked, now
+from cook2ltl.reduce.body import is_empty
 
 __all__ = ["NO_PLAN", "SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer",
            "shown_body"]
@@ -70,11 +71,11 @@ class LibraryEntry:
     @property
     def has_plan(self) -> bool:
         """False for the record of a reduction with no admissible plan (an empty body)."""
-        return bool(self.body.strip())
+        return not is_empty(self.body)
 
 
 def shown_body(body: str) -> str:
-    return body if body.strip() else NO_PLAN
+    return NO_PLAN if is_empty(body) else body
 
 
 def reviewer() -> str:
@@ -179,12 +180,13 @@ class Library:
         status = Status(status)
         with self._writing():
             row = self._row(entry_id)
-            if status == Status.APPROVED and not _entry(row).has_plan:
-                raise UserError(f"Entry {entry_id} ({_entry(row).action}) has no plan: there is nothing to approve.",
+            entry = _entry(row)
+            if status == Status.APPROVED and not entry.has_plan:
+                raise UserError(f"Entry {entry_id} ({entry.action}) has no plan: there is nothing to approve.",
                                 f"write its body with `cook2ltl library edit {entry_id} --body-file FILE`, "
                                 "then approve it.")
             if status == Status.APPROVED and row["validation"] == "failed" and not force:
-                raise UserError(f"Entry {entry_id} ({_entry(row).action}) failed the kitchen check: "
+                raise UserError(f"Entry {entry_id} ({entry.action}) failed the kitchen check: "
                                 f"{'; '.join(json.loads(row['problems'])) or 'no details'}.",
                                 "fix its body with `cook2ltl library edit`, or approve it anyway with --force.")
             self._set_status(entry_id, status, by or reviewer())

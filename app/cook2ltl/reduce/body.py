@@ -63,6 +63,11 @@ def without_loops(calls: tuple[Call, ...]) -> tuple[Call, ...]:
     return tuple(kept)
 
 
+def is_empty(body: str) -> bool:
+    """Whether a body has no line at all: how the library records that the model wrote no admissible plan."""
+    return not body.strip()
+
+
 def write_body(calls: tuple[Call, ...]) -> str:
     return "\n".join(call.text() for call in calls)
 

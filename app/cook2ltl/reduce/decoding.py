@@ -77,7 +77,5 @@ def _admitted_argmax(sampler, scores: np.ndarray, ids: np.ndarray) -> int | None
     candidates = llama_cpp.llama_token_data_array(
         data=data.ctypes.data_as(llama_cpp.llama_token_data_p), size=len(data), selected=-1, sorted=False)
     llama_cpp.llama_sampler_apply(sampler, ctypes.byref(candidates))  # refused tokens get a logit of -inf
-    admitted = np.isfinite(data["logit"])
-    if not admitted.any():
-        return None
-    return int(ids[np.argmax(np.where(admitted, data["logit"], -np.inf))])
+    best = int(np.argmax(data["logit"]))
+    return int(ids[best]) if np.isfinite(data["logit"][best]) else None

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
-from cook2ltl.reduce.body import bind, instantiate, loops, read_body, without_loops
+from cook2ltl.reduce.body import bind, instantiate, is_empty, loops, read_body, without_loops
 from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
@@ -60,8 +60,8 @@ def expand(calls: Sequence[Call], primitives: PrimitiveSet, find: Callable[[str,
             expanded.append(call)
             continue
         verb = find(call.name, len(call.args))
-        has_body = verb is not None and verb.body.strip()  # an entry without a plan is no verb to call
-        inner = instantiate(verb.body, bind(verb.signature, call.args)) if has_body else None
+        callable_ = verb is not None and not is_empty(verb.body)  # an entry without a plan is no verb to call
+        inner = instantiate(verb.body, bind(verb.signature, call.args)) if callable_ else None
         inner = expand(inner, primitives, find, depth + 1) if inner is not None else None
         if inner is None:
             return None
