@@ -99,13 +99,14 @@ def anyio_backend() -> str:
 
 
 async def settle(pilot) -> None:
-    """Wait for every worker to end (a failed one included: the app shows its dialog), then for the
-    messages they posted to be handled."""
-    from textual.worker import WorkerFailed
+    """Wait for every worker to end (a failed one included: the app shows its dialog; a cancelled one too: an
+    exclusive worker is cancelled when a newer one replaces it), then for the messages they posted to be
+    handled."""
+    from textual.worker import WorkerCancelled, WorkerFailed
 
     try:
         await pilot.app.workers.wait_for_complete()
-    except WorkerFailed:
+    except (WorkerFailed, WorkerCancelled):
         pass
     await pilot.pause()
     await pilot.pause()  # the tables lay their columns out on the refresh after the messages
