@@ -10,6 +10,9 @@
     recipe_bytes = 200000
     steps = 500
     llm_seconds = 120                          # wall-clock bound of one reduction by the language model
+    [translate]                                # the app's Translate screen
+    primitives = ["~/robot/primitives.toml"]   # your robots' primitive sets, offered beside recipe and ai2thor
+    repairs = 2                                # times a plan the kitchen refuses goes back to the model
     [keymap]                                   # the app's keys: binding id = keys (a wrong id is named)
     "translate.run" = "ctrl+enter"
     "library.approve" = "y,a"
@@ -43,9 +46,16 @@ class Limits:
 
 
 @dataclass(frozen=True)
+class TranslateSettings:
+    primitives: tuple[Path, ...] = ()  # TOML primitive sets beside the built-in ones
+    repairs: int = 2
+
+
+@dataclass(frozen=True)
 class Settings:
     ner: NerSettings = NerSettings()
     limits: Limits = Limits()
+    translate: TranslateSettings = TranslateSettings()
     keymap: dict[str, str] = field(default_factory=dict)  # binding id -> keys; the app checks the ids
     source: Path | None = None
 
@@ -70,7 +80,24 @@ def load_settings(path: Path | None = None) -> Settings:
         raise UserError(f"{path}: bad [ner] setting: {error}",
                         f"labels are keyed by {', '.join(Label)}; threshold is a number.") from error
     return Settings(ner=NerSettings(checkpoint, labels, threshold), limits=_limits(raw.get("limits", {}), path),
-                    keymap=_keymap(raw.get("keymap", {}), path), source=path)
+                    translate=_translate(raw.get("translate", {}), path), keymap=_keymap(raw.get("keymap", {}), path),
+                    source=path)
+
+
+def _translate(raw: dict, path: Path) -> TranslateSettings:
+    unknown = set(raw) - set(TranslateSettings.__dataclass_fields__)
+    if unknown:
+        raise UserError(f"{path}: unknown [translate] setting {', '.join(sorted(unknown))}.",
+                        "the settings are primitives (a list of TOML files) and repairs (0 to 10).")
+    primitives = raw.get("primitives", [])
+    if not isinstance(primitives, list) or not all(isinstance(item, str) and item.strip() for item in primitives):
+        raise UserError(f"{path}: [translate] primitives = {primitives!r} is not a list of files.",
+                        'write e.g. primitives = ["~/robot/primitives.toml"].')
+    repairs = raw.get("repairs", TranslateSettings.repairs)
+    if isinstance(repairs, bool) or not isinstance(repairs, int) or not 0 <= repairs <= 10:
+        raise UserError(f"{path}: [translate] repairs = {repairs!r} is not a whole number from 0 to 10.",
+                        f"the default is {TranslateSettings.repairs}.")
+    return TranslateSettings(tuple(Path(item).expanduser() for item in primitives), repairs)
 
 
 def _keymap(raw: dict, path: Path) -> dict[str, str]:

@@ -1,3 +1,5 @@
+from pathlib import Path
+
 import pytest
 
 from cook2ltl.domain import Label, Span
@@ -23,8 +25,19 @@ def test_settings_read_a_keymap(tmp_path):
     assert load_settings(config).keymap == {"translate.run": "f5", "library.approve": "y,a"}
 
 
+def test_settings_read_the_labs_primitive_sets_and_repairs(tmp_path, monkeypatch):
+    monkeypatch.setenv("HOME", str(tmp_path))
+    config = tmp_path / "config.toml"
+    config.write_text('[translate]\nprimitives = ["~/robot.toml", "/labs/arm.toml"]\nrepairs = 0\n')
+    translate = load_settings(config).translate
+    assert translate.primitives == (tmp_path / "robot.toml", Path("/labs/arm.toml")) and translate.repairs == 0
+    assert Settings().translate.primitives == () and Settings().translate.repairs == 2
+
+
 @pytest.mark.parametrize("content", ["[ner\n", '[ner.labels]\nCOLOUR = "x"\n', '[ner]\nthreshold = "high"\n',
-                                     'keymap = 3\n', '[keymap]\n"translate.run" = 5\n', '[keymap]\nx = " "\n'])
+                                     'keymap = 3\n', '[keymap]\n"translate.run" = 5\n', '[keymap]\nx = " "\n',
+                                     '[translate]\nrepairs = 11\n', '[translate]\nrepairs = true\n',
+                                     '[translate]\nprimitives = "robot.toml"\n', '[translate]\nrepair = 1\n'])
 def test_bad_settings_are_user_errors(tmp_path, content):
     config = tmp_path / "config.toml"
     config.write_text(content)

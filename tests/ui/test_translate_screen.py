@@ -10,7 +10,7 @@ import pytest
 from textual.widgets import Button, Checkbox, Input, TextArea
 
 from cook2ltl.errors import UserError
-from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone, WorkStopped
+from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone, WorkNotice, WorkStopped
 from cook2ltl.ui.screens.dialogs import ErrorDialog, PathDialog
 from cook2ltl.ui.screens.translate import TranslateScreen
 from cook2ltl.ui.widgets.formulas import FormulaList
@@ -228,3 +228,29 @@ async def test_lab_mode_reuses_approved_entries_only(make_app, model, services):
         await settle(pilot)
         assert [row[3] for row in rows(app.screen, "#reductions-table")] == ["cached #1", "primitive", "cached #1"]
         assert model.calls == 2
+
+
+async def test_a_labs_primitive_set_and_repairs_come_from_the_settings(make_app, model, services, tmp_path):
+    from cook2ltl import paths
+    from cook2ltl.settings import TranslateSettings
+
+    recipe_set = (paths.assets_dir() / "primitives" / "recipe.toml").read_text()
+    examples = paths.assets_dir() / "prompts" / "recipe.txt"
+    robot = tmp_path / "boiling-robot.toml"  # a robot that boils by itself
+    robot.write_text(recipe_set.replace('"../prompts/recipe.txt"', f'"{examples}"')
+                     .replace('name = "recipe"', 'name = "boiling-robot"') + 'boil = ["what"]\n')
+    model.answers["boil"] = BOIL_UNHELD  # refused by the kitchen, and never repaired: repairs = 0
+    app, posted = make_app(translate=TranslateSettings((robot,), repairs=0)), []
+    async with app.run_test(size=SIZE, message_hook=posted.append) as pilot:
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        assert [row[3:6] for row in rows(app.screen, "#reductions-table")][0] == ["new #1", "0.0", "failed"]
+        assert model.calls == 1
+        app.screen.query_one("#primitives").value = str(robot)
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        # boil is the robot's own now; the kitchen cannot run it, so nothing is checked, with a notice
+        assert [row[3] for row in rows(app.screen, "#reductions-table")] == ["primitive"] * 3
+        assert model.calls == 1
+        assert [m.text for m in once(posted) if isinstance(m, WorkNotice)] == [
+            "Not checking new reductions: the kitchen has no action for boil."]

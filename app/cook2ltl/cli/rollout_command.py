@@ -43,8 +43,9 @@ def rollout_command(
                                     help="AR passes primitives through; AR+A also reuses and grows the library."),
     validate: bool = typer.Option(True, "--validate/--no-validate", help="AR+A: check a new reduction in a kitchen "
                                   "of its own before it is cached, as `translate` does."),
-    repairs: int = typer.Option(2, "--repairs", min=0, max=10, help="Times a plan the check refuses goes back to "
-                                "the model."),
+    repairs: Optional[int] = typer.Option(None, "--repairs", min=0, max=10, show_default=False,
+                                          help="Times a plan the check refuses goes back to the model (default: "
+                                               "the settings' [translate] repairs, else 2)."),
     list_tasks: bool = typer.Option(False, "--list", help="List the tasks and exit."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
@@ -55,6 +56,7 @@ def rollout_command(
     from cook2ltl.kitchen.launcher import start_kitchen
     from cook2ltl.kitchen.planning import open_planner
     from cook2ltl.kitchen.trial import TrialDone, run_trial, trial_json
+    from cook2ltl.settings import load_settings
 
     if list_tasks:
         show_tasks(Console(), as_json)
@@ -62,6 +64,8 @@ def rollout_command(
     if target is None:
         raise UserError("No task or formula given.", "name a task (cook2ltl rollout --list) or write a formula.")
     task, formula = read_target(target, reference)
+    if repairs is None:
+        repairs = load_settings().translate.repairs
     scene = _scene(scene or (task.scene if task else DEFAULT_SCENE))
     errors = Console(stderr=True)
     with errors.status(f"starting the {backend.value} kitchen …"):

@@ -34,8 +34,9 @@ def translate_command(
     validate: Optional[bool] = typer.Option(None, "--validate/--no-validate",
                                             help="Run each new reduction in the THOR kitchen before caching it "
                                                  "(default: on for AR+A)."),
-    repairs: int = typer.Option(2, "--repairs", min=0, max=10,
-                                help="How many times a plan that fails in the kitchen goes back to the model."),
+    repairs: Optional[int] = typer.Option(None, "--repairs", min=0, max=10, show_default=False,
+                                          help="How many times a plan that fails in the kitchen goes back to the "
+                                               "model (default: the settings' [translate] repairs, else 2)."),
     approved_only: bool = typer.Option(False, "--approved-only",
                                        help="Reuse only approved library entries (new ones are still cached, pending)."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
@@ -52,15 +53,16 @@ def translate_command(
     from cook2ltl.translate.serialize import translation_json
 
     text = read_recipe(recipe)
+    settings = load_settings()
     chosen = load_primitives(primitives)
     language_model = load_model(model)
     errors = Console(stderr=True)
     validator = _validator(chosen, validate, variant, errors)
     store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
     translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments),
-                            validator, repairs, approved_only)
+                            validator, settings.translate.repairs if repairs is None else repairs, approved_only)
     try:
-        events = run(text, span_extractor(load_settings()), dependency_parser(), translator)
+        events = run(text, span_extractor(settings), dependency_parser(), translator)
         translation = _follow(events, errors)
     finally:
         if store is not None:

@@ -18,6 +18,7 @@ from textual.binding import Binding
 from textual.screen import Screen
 
 from cook2ltl.errors import UserError
+from cook2ltl.settings import TranslateSettings, load_settings
 from cook2ltl.ui.commands import MainCommands
 from cook2ltl.ui.messages import TranslationDone
 from cook2ltl.ui.screens.base import WorkScreen
@@ -47,7 +48,7 @@ class Cook2LTLApp(App):
     ]
 
     def __init__(self, services: Services, recipe_text: str = "", recipe_path: Path | None = None,
-                 keymap: Mapping[str, str] | None = None) -> None:
+                 keymap: Mapping[str, str] | None = None, translate: TranslateSettings | None = None) -> None:
         super().__init__()
         self.keymap = dict(keymap or {})
         unknown = sorted(set(self.keymap) - binding_ids())
@@ -55,6 +56,7 @@ class Cook2LTLApp(App):
             raise UserError(f"The settings' [keymap] names no binding {', '.join(unknown)}.",
                             f"the binding ids are {', '.join(sorted(binding_ids()))}.")
         self.services = services
+        self.translate_settings = translate or TranslateSettings()  # the lab's primitive sets and repairs
         self.recipe_text = recipe_text
         self.recipe_path = recipe_path
         self.model_name = services.model_names[0]  # chosen on Translate, used by Rollout's planning too
@@ -131,7 +133,6 @@ def run_app(recipe_path: str | Path | None = None) -> None:
             raise UserError("The app reads its keys from the terminal, not a recipe from standard input.",
                             "give a recipe file, or paste the recipe into the app's editor.")
         text = read_recipe(str(recipe_path))
-    from cook2ltl.settings import load_settings
-
-    keymap = load_settings().keymap
-    Cook2LTLApp(production_services(), text, Path(recipe_path) if recipe_path else None, keymap).run()
+    settings = load_settings()
+    Cook2LTLApp(production_services(), text, Path(recipe_path) if recipe_path else None, settings.keymap,
+                settings.translate).run()

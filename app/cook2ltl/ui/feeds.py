@@ -15,7 +15,7 @@ from textual.message import Message
 
 from cook2ltl.ui.messages import (
     ActionReduced, ObjectState, RecipeParsed, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped,
-    StepTranslated, TranslationDone, WorkProgress, WorkStopped,
+    StepTranslated, TranslationDone, WorkNotice, WorkProgress, WorkStopped,
 )
 from cook2ltl.ui.services import Services
 
@@ -32,6 +32,7 @@ class TranslateRequest:
     model: str
     validate: bool = True  # run new reductions in the kitchen before caching them (repairing failures)
     approved_only: bool = False  # lab mode: reuse approved library entries only
+    repairs: int = 2  # times a plan the kitchen refuses goes back to the model
 
 
 @dataclass(frozen=True)
@@ -40,6 +41,7 @@ class RolloutRequest:
     task: Task | None = None
     formula: Formula | None = None  # None: plan the task's instruction with Algorithm 1 first
     model: str = ""
+    repairs: int = 2  # as TranslateRequest's, when the instruction is planned
 
 
 def translation_feed(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
@@ -59,15 +61,22 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
 def _translating(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
     from cook2ltl.pipeline import ActionDone, Finished, Parsed, Started, StepDone, Translator, Variant, run
     from cook2ltl.reduce.primitives import load_primitives
+    from cook2ltl.reduce.validation import unsupported
 
     variant = Variant(request.variant)
     primitives = load_primitives(request.primitives)
     yield WorkProgress("loading the parsing models …")
     spans, dependencies = services.spans(), services.dependencies()
     library = services.library() if variant == Variant.AR_LIBRARY else None
-    validator = services.validator(primitives) if request.validate else None
+    validator = None
+    if request.validate:
+        missing = unsupported(primitives)  # a lab's set with actions THOR has no stand-in for: as the CLI does
+        if missing:
+            yield WorkNotice(f"Not checking new reductions: the kitchen has no action for {', '.join(missing)}.")
+        else:
+            validator = services.validator(primitives)
     translator = Translator(primitives, services.model(request.model, cancel), library, variant, validator=validator,
-                            approved_only=request.approved_only)
+                            repairs=request.repairs, approved_only=request.approved_only)
     yield WorkProgress("parsing (the span model loads on first use) …")
     total = 0
     for event in run(request.text, spans, dependencies, translator, cancel):
@@ -98,7 +107,7 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
         yield WorkProgress(f"planning “{task.instruction}” with {request.model} …")
         with services.pipeline_lock:
             try:
-                plan = _planner(services, request.model, cancel).plan(task.instruction)
+                plan = _planner(services, request, cancel).plan(task.instruction)
             except GenerationCancelled:
                 plan = None
         if plan is None or cancel.is_set():
@@ -122,15 +131,15 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
                 yield RolloutDone(event.trial)
 
 
-def _planner(services: Services, model: str, cancel: threading.Event):
+def _planner(services: Services, request: RolloutRequest, cancel: threading.Event):
     from cook2ltl.kitchen.planning import PRIMITIVES, Planner
     from cook2ltl.pipeline import Translator
     from cook2ltl.reduce.primitives import load_primitives
 
     primitives = load_primitives(PRIMITIVES)
     # New reductions are checked and repaired before they are cached, as when translating.
-    translator = Translator(primitives, services.model(model, cancel), services.library(),
-                            validator=services.validator(primitives))
+    translator = Translator(primitives, services.model(request.model, cancel), services.library(),
+                            validator=services.validator(primitives), repairs=request.repairs)
     return Planner(translator, services.spans(), services.dependencies())
 
 

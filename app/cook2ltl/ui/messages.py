@@ -41,6 +41,14 @@ class WorkProgress(ScreenMessage):
         self.text, self.done, self.total = text, done, total
 
 
+class WorkNotice(ScreenMessage):
+    """Something the user should know about a job that goes on (a notification, not the status line)."""
+
+    def __init__(self, text: str) -> None:
+        super().__init__()
+        self.text = text
+
+
 class WorkStopped(ScreenMessage):
     """The job ended early because it was cancelled."""
 

@@ -10,7 +10,7 @@ from textual.reactive import reactive
 from textual.screen import Screen
 from textual.worker import Worker, WorkerState
 
-from cook2ltl.ui.messages import WorkProgress, WorkStopped
+from cook2ltl.ui.messages import WorkNotice, WorkProgress, WorkStopped
 from cook2ltl.ui.widgets.status import WorkStatus
 
 
@@ -44,6 +44,9 @@ class WorkScreen(Screen):
 
     def on_work_progress(self, message: WorkProgress) -> None:
         self.query_one(WorkStatus).show(message.text, message.done, message.total)
+
+    def on_work_notice(self, message: WorkNotice) -> None:
+        self.notify(message.text, severity="warning", timeout=10)
 
     def on_work_stopped(self, _: WorkStopped) -> None:
         self.query_one(WorkStatus).show("stopped")

@@ -118,7 +118,8 @@ class RolloutScreen(WorkScreen):
         if target.startswith("task:"):
             task = find_task(target.removeprefix("task:"))
             formula = reference_formula(task) if self.query_one("#reference", Checkbox).value else None
-            return RolloutRequest(scene or task.scene, task, formula, self.app.model_name)
+            return RolloutRequest(scene or task.scene, task, formula, self.app.model_name,
+                                  self.app.translate_settings.repairs)
         if target.startswith("recipe"):
             return RolloutRequest(scene or DEFAULT_SCENE, formula=self._recipe_formula(target))
         return RolloutRequest(scene or DEFAULT_SCENE, formula=self._typed_formula())

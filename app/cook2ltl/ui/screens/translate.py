@@ -49,17 +49,21 @@ class TranslateScreen(WorkScreen):
     def compose(self) -> ComposeResult:
         yield Header()
         with Horizontal(id="translate-options", classes="options"):
-            yield Select(PRIMITIVE_SETS, value="recipe", allow_blank=False, id="primitives",
-                         tooltip="The robot's primitive actions: the paper's recipe set, or AI2-THOR's (rollouts).")
+            lab_sets = tuple((path.name, str(path)) for path in self.app.translate_settings.primitives)
+            yield Select(PRIMITIVE_SETS + lab_sets, value="recipe", allow_blank=False, id="primitives",
+                         tooltip="The robot's primitive actions: the paper's recipe set, AI2-THOR's (rollouts), "
+                                 "or a set the settings' [translate] primitives name.")
             yield Select(VARIANTS, value="AR+A", allow_blank=False, id="variant",
                          tooltip="The paper's ablation: AR+𝔸 reuses and grows the action library (approved only: "
                                  "reuses only entries a reviewer approved); AR passes primitives through; AR* asks "
                                  "the model for every action.")
             models = self.app.services.model_names
             yield Select([(name, name) for name in models], value=self.app.model_name, allow_blank=False, id="model")
+            repairs = self.app.translate_settings.repairs
             yield Checkbox("kitchen check", True, id="validate",
                            tooltip="Run each new reduction in the THOR kitchen before caching it; a failing plan "
-                                   "goes back to the model with its problems (2 repairs).")
+                                   f"goes back to the model with its problems ({repairs} repairs, the settings' "
+                                   "[translate] repairs).")
             yield Button("Run", variant="primary", id="run")
             yield Button("Open…", id="open")
         with Horizontal(id="translate-body"):
@@ -105,7 +109,8 @@ class TranslateScreen(WorkScreen):
         chosen = self.query_one("#variant", Select).value
         request = TranslateRequest(text, self.query_one("#primitives", Select).value,
                                    "AR+A" if chosen == LAB_MODE else chosen, self.query_one("#model", Select).value,
-                                   self.query_one("#validate", Checkbox).value, approved_only=chosen == LAB_MODE)
+                                   self.query_one("#validate", Checkbox).value, approved_only=chosen == LAB_MODE,
+                                   repairs=self.app.translate_settings.repairs)
         self.query_one(StepsView).update("parsing …")
         self.query_one(ReductionsTable).clear()
         self.query_one("#reduction-summary", Static).update("")
