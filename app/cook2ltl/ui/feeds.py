@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 from textual.message import Message
 
+from cook2ltl.settings import TranslateSettings
 from cook2ltl.ui.messages import (
     ActionReduced, ObjectState, RecipeParsed, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped,
     StepTranslated, TranslationDone, WorkNotice, WorkProgress, WorkStopped,
@@ -32,7 +33,7 @@ class TranslateRequest:
     model: str
     validate: bool = True  # run new reductions in the kitchen before caching them (repairing failures)
     approved_only: bool = False  # lab mode: reuse approved library entries only
-    repairs: int = 2  # times a plan the kitchen refuses goes back to the model
+    repairs: int = TranslateSettings.repairs  # times a plan the kitchen refuses goes back to the model
 
 
 @dataclass(frozen=True)
@@ -41,7 +42,7 @@ class RolloutRequest:
     task: Task | None = None
     formula: Formula | None = None  # None: plan the task's instruction with Algorithm 1 first
     model: str = ""
-    repairs: int = 2  # as TranslateRequest's, when the instruction is planned
+    repairs: int = TranslateSettings.repairs  # as TranslateRequest's, when the instruction is planned
 
 
 def translation_feed(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
