@@ -39,7 +39,7 @@ $(VENV)/.created:
 $(VENV)/.installed: $(VENV)/.created pyproject.toml
 	@echo "==> [2/4] packages (torch CPU, llama-cpp-python build, the project)"
 	$(BIN)/python -m pip install --progress-bar off torch==2.13.0
-	$(BIN)/python -m pip install --progress-bar off -e ".[models,llm,sim,dev]"
+	$(BIN)/python -m pip install --progress-bar off -e ".[models,llm,sim,planning,dev]"
 	$(BIN)/python -m pip install --progress-bar off --no-deps flloat==0.3.0
 	@command -v mona >/dev/null || (apt-get install -y -q mona || (apt-get update -q && apt-get install -y -q mona)) \
 		|| echo "MONA could not be installed: the ltlf2dfa oracle test will be skipped"

@@ -39,6 +39,7 @@ from cook2ltl.reduce.validation import PlanValidator, Validation
 from cook2ltl.translate.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
+from cook2ltl.world.check import Grounding, PlanCheck, check_plan
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
 
@@ -59,6 +60,7 @@ class Translator:
     validator: PlanValidator | None = None  # checks new reductions in the kitchen before they are cached
     repairs: int = 2  # how many times a plan that fails the check is written again
     approved_only: bool = False  # lab mode: reuse approved library entries only
+    grounding: Grounding | None = None  # the world model every plan is checked and completed in (None: off)
 
 
 @dataclass(frozen=True)
@@ -72,6 +74,7 @@ class ActionResult:
     # that failed when it was learnt is never reused silently.
     entry_validation: str | None = None
     entry_problems: tuple[str, ...] = ()
+    check: PlanCheck | None = None  # the plan in the world model, where the recipe's earlier steps left it
 
 
 @dataclass(frozen=True)
@@ -98,6 +101,10 @@ class Stats:
     checked: int = 0  # new reductions the kitchen could check (passed or failed)
     repaired: int = 0  # of the validated, those that passed only after a repair
     repair_calls: int = 0  # model calls for repairs (not in llm_calls; their tokens and time are)
+    grounded: int = 0  # actions checked in the world model
+    reached: int = 0  # of those, the ones whose plan reaches the action's intended effect
+    model_lines_applied: int = 0  # new reductions whose lines as the model wrote them all applied
+    planner_lines: int = 0  # plan lines the planner wrote
     seconds: float = 0.0
 
 
@@ -182,6 +189,7 @@ def run(text: str, spans: SpanExtractor, dependencies: DependencyParser, transla
 def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Event | None = None) -> Iterator[Event]:
     started = time.perf_counter()
     state = _Run(translator)
+    state.start(parsed)
     total = sum(len(actions_of(frame)) for step in parsed.steps for frame in step.frames)
     yield Started(len(parsed.steps), total)
     steps, elements, done = [], [], 0
@@ -220,6 +228,7 @@ class _Run:
         if self.uses_library and translator.library is None:
             raise ValueError("the AR+A variant needs a library")
         self.verbs: list[LibraryVerb] = []
+        self.world_state = None  # the world model's state where the recipe has got to
         self._refresh()
 
     def action(self, frame_index: int, action: Action) -> tuple[ActionResult, Element | None]:
@@ -230,8 +239,11 @@ class _Run:
             calls = direct_calls(action, primitive)
             if calls is not None:
                 self._count(primitive=1)
-                result = ActionResult(frame_index, Reduction(action, calls, Source.PRIMITIVE), calls)
-                return result, direct_element(action, calls, primitives)
+                grounded = self._ground(action, calls, "recipe")
+                plan = grounded.plan if grounded else calls
+                result = ActionResult(frame_index, Reduction(action, calls, Source.PRIMITIVE), plan, check=grounded)
+                element = direct_element(action, calls, primitives) if plan == calls else plan_element(plan, primitives)
+                return result, element
         stale = None
         if self.uses_library:
             entry = self.t.library.lookup(primitives.name, action.verb, action.signature, self.t.approved_only)
@@ -244,19 +256,47 @@ class _Run:
             plan = self._expand(body) if body is not None else None
             if plan:
                 self._count(library_hits=1)
+                grounded = self._ground(action, plan, "library")
+                plan = grounded.plan if grounded else plan
                 reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
                 result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
-                                      entry_problems=entry.problems)
-                return result, plan_element(plan, primitives)
+                                      entry_problems=entry.problems, check=grounded)
+                return result, plan_element(plan, primitives) if plan else None
             stale = entry.id if entry else None  # written for another version of the primitive set
         checked = reduce_checked(action, primitives, self.verbs, self.t.model, self.t.settings, self._expand,
                                  self.t.validator, self.t.repairs)
         self._count_reductions(checked)
         reduction, plan, validation = checked.reduction, checked.plan, checked.validation
+        grounded = self._ground(action, plan, "model")
+        if grounded is not None:
+            self._count(model_lines_applied=int(bool(plan) and grounded.applicable))
+            if grounded.plan != plan:  # lines dropped or completed: the checked plan is what is learnt
+                reduction = replace(reduction, body=grounded.plan)
+                plan = grounded.plan
         if self.uses_library and not self._awaiting_review(action):
             reduction = self._learn(action, reduction, plan, validation, stale)
-        result = ActionResult(frame_index, reduction, plan, validation, checked.failed)
+        result = ActionResult(frame_index, reduction, plan, validation, checked.failed, check=grounded)
         return result, plan_element(plan, primitives) if plan else None
+
+    def start(self, parsed: ParsedRecipe) -> None:
+        """The kitchen before the first step, holding every object the recipe names."""
+        grounding = self.t.grounding
+        if grounding is not None:
+            names = [o for step in parsed.steps for frame in step.frames for a in actions_of(frame) for o in a.objects]
+            self.world_state = grounding.start(names)
+
+    def _ground(self, action: Action, plan: tuple[Call, ...], origin: str) -> PlanCheck | None:
+        """The plan checked where the recipe has got to, completed to the action's effect; the run moves on."""
+        grounding = self.t.grounding
+        if grounding is None:
+            return None
+        from cook2ltl.world.effects import intended_effect
+
+        effect = intended_effect(action, grounding.world, self.world_state) or ()
+        checked = check_plan(grounding.world, self.world_state, plan, effect, grounding.planner, origin)
+        self.world_state = checked.state
+        self._count(grounded=1, reached=int(checked.effect_reached), planner_lines=checked.planner_lines)
+        return checked
 
     def _learn(self, action: Action, reduction: Reduction, plan: tuple[Call, ...], validation: Validation | None,
                stale: int | None) -> Reduction:

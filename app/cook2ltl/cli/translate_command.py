@@ -37,6 +37,9 @@ def translate_command(
     repairs: Optional[int] = typer.Option(None, "--repairs", min=0, max=10, show_default=False,
                                           help="How many times a plan that fails in the kitchen goes back to the "
                                                "model (default: the settings' [translate] repairs, else 2)."),
+    ground: bool = typer.Option(True, "--ground/--no-ground",
+                                help="Check every plan in the primitive set's world model where the recipe has got to, "
+                                     "and let the planner complete it to the action's intended effect."),
     approved_only: bool = typer.Option(False, "--approved-only",
                                        help="Reuse only approved library entries (new ones are still cached, pending)."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
@@ -57,10 +60,12 @@ def translate_command(
     chosen = load_primitives(primitives)
     language_model = load_model(model)
     errors = Console(stderr=True)
-    validator = _validator(chosen, validate, variant, errors)
+    grounding = _grounding(chosen, ground)
+    validator = _validator(chosen, validate, variant, errors, grounding is not None)
     store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
     translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments),
-                            validator, settings.translate.repairs if repairs is None else repairs, approved_only)
+                            validator, settings.translate.repairs if repairs is None else repairs, approved_only,
+                            grounding)
     try:
         events = run(text, span_extractor(settings), dependency_parser(), translator)
         translation = _follow(events, errors)
@@ -76,12 +81,22 @@ def translate_command(
         show(translation, Console())
 
 
-def _validator(primitives, validate: bool | None, variant: Variant, errors: Console):
+def _grounding(primitives, ground: bool):
+    """The set's world model with the planner, or None: turned off, or the set names no world."""
+    from cook2ltl.world.kitchens import grounding
+
+    return grounding(primitives) if ground else None
+
+
+def _validator(primitives, validate: bool | None, variant: Variant, errors: Console, grounded: bool = False):
     """The kitchen validator, or None: not asked for, or by default with a primitive set it cannot run (asked
-    for explicitly, that is an error)."""
+    for explicitly, that is an error). A set whose world has its own kitchen file is judged there, not by
+    THOR stand-ins, unless asked for."""
     from cook2ltl.reduce.validation import KitchenValidator, unsupported
 
     if validate is False or (validate is None and variant != Variant.AR_LIBRARY):
+        return None
+    if validate is None and grounded and primitives.world.kitchen is not None:
         return None
     missing = unsupported(primitives)
     if missing and validate is None:

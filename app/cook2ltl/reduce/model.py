@@ -23,6 +23,16 @@ class Primitive:
 
 
 @dataclass(frozen=True)
+class WorldSpec:
+    """Where a primitive set's world model lives: its PDDL domain, the kitchen its plans start in (a kitchen
+    file, or THOR's scenes), and the predicates its state words name (`golden` → browned)."""
+
+    domain: Path
+    kitchen: Path | None  # None: the AI2-THOR kitchens
+    states: tuple[tuple[str, str], ...]  # (word, predicate): hashable, as the set is
+
+
+@dataclass(frozen=True)
 class PrimitiveSet:
     """𝒜: a robot's primitives, the environment's objects and states, and the prompt's example functions."""
 
@@ -32,6 +42,7 @@ class PrimitiveSet:
     states: tuple[str, ...]
     examples: str
     source: Path
+    world: WorldSpec | None = None  # the set's world model, when its file names one
 
     def get(self, name: str) -> Primitive | None:
         return next((primitive for primitive in self.primitives if primitive.name == name), None)

@@ -18,11 +18,12 @@ from pathlib import Path
 
 from cook2ltl import paths
 from cook2ltl.errors import UserError
-from cook2ltl.reduce.model import CONDITION, Primitive, PrimitiveSet
+from cook2ltl.reduce.model import CONDITION, Primitive, PrimitiveSet, WorldSpec
 
 BUILT_IN = ("recipe", "ai2thor")
 IDENTIFIER = re.compile(r"[a-z][a-z0-9_]*\Z")
 VALUE = re.compile(r"[a-z0-9][a-z0-9_]*\Z")
+THOR_KITCHENS = "thor"  # a [world] kitchen: the 30 AI2-THOR kitchens
 
 
 def load_primitives(choice: str) -> PrimitiveSet:
@@ -68,7 +69,26 @@ def _primitive_set(raw: dict, path: Path) -> PrimitiveSet:
     except OSError as error:
         raise bad(f"cannot read the examples file {examples_path}: {error.strerror}.") from error
     name = raw.get("name", path.stem)
-    return PrimitiveSet(str(name), tuple(primitives), objects, states, examples, path)
+    return PrimitiveSet(str(name), tuple(primitives), objects, states, examples, path, _world(raw, path, bad))
+
+
+def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
+    """[world]: domain = "x.pddl", kitchen = "k.toml" or "thor", [world.states] word = "predicate"."""
+    table = raw.get("world")
+    if table is None:
+        return None
+    if not isinstance(table, dict) or not isinstance(table.get("domain"), str):
+        raise bad("[world] needs `domain = \"file.pddl\"`, the set's PDDL domain.")
+    kitchen = table.get("kitchen", THOR_KITCHENS)
+    states = table.get("states", {})
+    if not isinstance(kitchen, str) or not isinstance(states, dict) or not all(
+            isinstance(v, str) and IDENTIFIER.match(k) for k, v in states.items()):
+        raise bad("[world] kitchen must be a file name or \"thor\", and [world.states] map words to predicates.")
+    domain = path.parent / table["domain"]
+    if not domain.is_file():
+        raise bad(f"the domain file {domain} does not exist.")
+    where = None if kitchen == THOR_KITCHENS else path.parent / kitchen
+    return WorldSpec(domain, where, tuple(sorted(states.items())))
 
 
 def _words(raw: dict, key: str, bad) -> tuple[str, ...]:

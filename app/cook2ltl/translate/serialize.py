@@ -47,4 +47,5 @@ def action_json(result: ActionResult) -> dict:
         "dropped": list(reduction.dropped),
         "library_entry": reduction.entry_id,
         "usage": asdict(reduction.usage),
+        "check": result.check.json() if result.check is not None else None,
     }

@@ -1,0 +1,85 @@
+"""Intended effects: the states an action must leave, from the verb-effect table (assets/effects.toml).
+
+    [verbs]
+    boil = ["boiled(what)"]
+    refrigerate = ["cold(what)", "in(what, fridge)"]
+
+An atom's arguments are the action's slots (what, where, how: one atom per object of the slot) or kitchen
+objects. A verb missing from the table falls back to its first word (`stir_in` → stir). "done" and "ready"
+are never effects: the world cannot observe them.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from functools import cache
+from itertools import product
+from pathlib import Path
+
+from cook2ltl import paths
+from cook2ltl.errors import UserError
+from cook2ltl.reduce.model import Action
+from cook2ltl.world.logic import Fact, State
+from cook2ltl.world.world import World
+
+SLOTS = ("what", "where", "how")
+NEVER = frozenset({"done", "ready"})
+_ATOM = re.compile(r"\s*([a-z][a-z0-9_-]*)\(([a-z0-9_, ]*)\)\s*\Z")
+
+Template = tuple[str, tuple[str, ...]]  # predicate, arguments (slots or objects)
+
+
+def effects_file() -> Path:
+    return paths.assets_dir() / "effects.toml"
+
+
+@cache
+def verb_table(path: Path | None = None) -> dict[str, tuple[Template, ...]]:
+    path = path or effects_file()
+    try:
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))["verbs"]
+    except (OSError, tomllib.TOMLDecodeError, KeyError) as error:
+        raise UserError(f"cannot read the verb-effect table {path}: {error}",
+                        "it is a [verbs] table: boil = [\"boiled(what)\"].") from error
+    return {verb: tuple(_template(verb, atom, path) for atom in atoms) for verb, atoms in raw.items()}
+
+
+def _template(verb: str, text: str, path: Path) -> Template:
+    match = _ATOM.match(text) if isinstance(text, str) else None
+    if match is None or match[1] in NEVER:
+        raise UserError(f"{path}: {verb} = {text!r} is not an effect atom such as boiled(what).",
+                        "effects are observable states; done and ready are never effects.")
+    return match[1], tuple(arg.strip() for arg in match[2].split(",") if arg.strip())
+
+
+def known_verb(verb: str, table: dict[str, tuple[Template, ...]] | None = None) -> str | None:
+    table = verb_table() if table is None else table
+    if verb in table:
+        return verb
+    first = verb.split("_", 1)[0]
+    return first if first in table else None
+
+
+def intended_effect(action: Action, world: World, state: State) -> tuple[Fact, ...] | None:
+    """The facts `action` must make true, in `world`'s predicates, over objects of `state`; None when the
+    table does not know the verb. Atoms the world cannot observe or whose objects it lacks are left out."""
+    table = verb_table()
+    verb = known_verb(action.verb, table)
+    if verb is None:
+        return None
+    slots = {slot: [p.value for p in action.parameters if p.category == slot] for slot in SLOTS}
+    facts: dict[Fact, None] = {}
+    for predicate, args in table[verb]:
+        name = world.predicate(predicate) if len(args) == 1 else predicate
+        if name is None or world.domain.predicates.get(name) != len(args):
+            continue
+        choices = [slots[a] if a in SLOTS else [a] for a in args]
+        for values in product(*choices):
+            if all(v in state.objects for v in values) and len(set(values)) == len(values):
+                facts[(name, *values)] = None
+    return tuple(facts)
+
+
+def fact_text(fact: Fact) -> str:
+    return f"{fact[0]}({', '.join(fact[1:])})"

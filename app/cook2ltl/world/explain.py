@@ -1,0 +1,92 @@
+"""Why a plan line cannot be applied, in words a cook (and a model shown its failed plan) can read.
+
+The first failing part of the action's precondition is named: `pick_up(oven)`: "oven cannot be picked
+up"; `put(egg, pot)`: "not holding egg". Predicates without a phrase are shown as PDDL.
+"""
+
+from __future__ import annotations
+
+from cook2ltl.world.logic import And, Atom, Condition, Env, Exists, Not, Or, Schema, State, bindings, ground, holds
+
+# predicate → (phrase when it is needed but false, phrase when it must be false but holds)
+PHRASES = {
+    "holding": ("not holding {0}", "{0} is in hand"),
+    "hand-empty": ("the hand is full", "the hand is empty"),
+    "portable": ("{0} cannot be picked up", ""),
+    "pickupable": ("{0} cannot be picked up", ""),
+    "receptacle": ("nothing can be put in or on {0}", ""),
+    "openable": ("{0} cannot be opened or closed", ""),
+    "opened": ("{0} is closed", "{0} is open"),
+    "switchable": ("{0} is not something to switch on or off", ""),
+    "toggleable": ("{0} is not something to switch on or off", ""),
+    "on": ("{0} is off", "{0} is on"),
+    "in": ("{0} is not in {1}", "{1} holds {0}"),
+    "food": ("{0} is not food", ""),
+    "liquid": ("{0} is not a liquid", "{0} is a liquid"),
+    "sliced": ("{0} is not cut", "{0} is already cut"),
+    "sliceable": ("{0} cannot be cut", ""),
+}
+
+
+def why_not(schema: Schema, args: tuple[str, ...], state: State) -> str:
+    env = dict(zip(schema.parameters, args))
+    failing = _first_failing(schema.precondition, state, env)
+    return _phrase(failing, state, env) if failing is not None else "its precondition does not hold"
+
+
+def _first_failing(condition: Condition, state: State, env: Env) -> Condition | None:
+    if isinstance(condition, And):
+        for part in condition.args:
+            found = _first_failing(part, state, env)
+            if found is not None:
+                return found
+        return None
+    return None if holds(condition, state, env) else condition
+
+
+def _phrase(condition: Condition, state: State, env: Env) -> str:
+    if isinstance(condition, Atom):
+        return _atom_phrase(ground(condition, env), True)
+    if isinstance(condition, Or):  # the first way it could have held is the usual one
+        return _phrase(condition.args[0], state, env)
+    if isinstance(condition, Not) and isinstance(condition.arg, Atom):
+        return _atom_phrase(ground(condition.arg, env), False)
+    if isinstance(condition, Not) and isinstance(condition.arg, Exists):
+        inner = condition.arg
+        for binding in bindings(inner.variables, inner.body, state, env):
+            if holds(inner.body, state, binding):
+                facts = [ground(a, binding) for a in _atoms(inner.body) if ground(a, binding) in state.facts]
+                closed = next((f[1] for f in facts if f[0] in ("openable",)), None)
+                if closed is not None:
+                    return f"{env[next(iter(env))] if env else 'it'} is shut inside the closed {closed}; open it first"
+                return "; ".join(_atom_phrase(f, False) for f in facts if f[0] == "in") or "it is in the way"
+    if isinstance(condition, Exists) and isinstance(condition.body, And):
+        wanted = [a for a in condition.body.args if isinstance(a, Atom)]
+        if any(a.predicate == "holding" for a in wanted):
+            kinds = [a.predicate for a in wanted if a.predicate != "holding"]
+            return f"nothing in hand is a {' '.join(kinds) or 'tool'} for it"
+    return f"needs {_pddl(condition, env)}"
+
+
+def _atom_phrase(fact: tuple[str, ...], needed: bool) -> str:
+    phrases = PHRASES.get(fact[0])
+    text = phrases[0 if needed else 1] if phrases else ""
+    if text:
+        return text.format(*fact[1:])
+    call = f"{fact[0]}({', '.join(fact[1:])})" if len(fact) > 1 else fact[0]
+    return f"{call} {'is false' if needed else 'holds'}"
+
+
+def _atoms(condition: Condition) -> list[Atom]:
+    if isinstance(condition, Atom):
+        return [condition]
+    if isinstance(condition, And):
+        return [a for part in condition.args for a in _atoms(part)]
+    return []
+
+
+def _pddl(condition: Condition, env: Env) -> str:
+    text = repr(condition)
+    for variable, value in env.items():
+        text = text.replace(f"'{variable}'", value)
+    return text

@@ -1,0 +1,203 @@
+"""A parsed PDDL domain as plain data, and its evaluation on a state: is this action applicable, what follows.
+
+Conditions are small frozen trees (And, Or, Not, Exists, Forall, Fact, Equal, Constant); arguments starting
+with `?` are variables. Quantifiers range over the state's objects; a quantifier over a conjunction binds its
+variables by joining the positive facts of the conjunction against the state (a tiny query planner), so
+`(exists (?c) (and (in ?x ?c) (openable ?c)))` looks at the containers of ?x only, not at every object.
+Effects follow PDDL: every condition is read in the old state, deletes are applied before adds.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Union
+
+Fact = tuple[str, ...]  # ("in", "egg", "pot"): a predicate and its objects
+
+
+@dataclass(frozen=True)
+class State:
+    """The objects of a world and the facts true of them (static kinds included)."""
+
+    objects: tuple[str, ...]
+    facts: frozenset[Fact]
+
+    @cached_property
+    def by_predicate(self) -> Mapping[str, tuple[Fact, ...]]:
+        index: dict[str, list[Fact]] = {}
+        for fact in self.facts:
+            index.setdefault(fact[0], []).append(fact)
+        return {name: tuple(facts) for name, facts in index.items()}
+
+    def holds(self, *fact: str) -> bool:
+        return tuple(fact) in self.facts
+
+    def changed(self, deleted: set[Fact], added: set[Fact]) -> State:
+        return State(self.objects, (self.facts - deleted) | added)
+
+
+@dataclass(frozen=True)
+class Atom:
+    predicate: str
+    args: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Equal:
+    left: str
+    right: str
+
+
+@dataclass(frozen=True)
+class Constant:
+    value: bool
+
+
+@dataclass(frozen=True)
+class Not:
+    arg: Condition
+
+
+@dataclass(frozen=True)
+class And:
+    args: tuple[Condition, ...]
+
+
+@dataclass(frozen=True)
+class Or:
+    args: tuple[Condition, ...]
+
+
+@dataclass(frozen=True)
+class Exists:
+    variables: tuple[str, ...]
+    body: Condition
+
+
+@dataclass(frozen=True)
+class Forall:
+    variables: tuple[str, ...]
+    body: Condition
+
+
+Condition = Union[Atom, Equal, Constant, Not, And, Or, Exists, Forall]
+Env = Mapping[str, str]
+
+
+@dataclass(frozen=True)
+class Effect:
+    """`forall variables: when condition: fact := value`."""
+
+    fact: Atom
+    value: bool
+    condition: Condition = Constant(True)
+    variables: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Schema:
+    """One action of the domain."""
+
+    name: str
+    parameters: tuple[str, ...]  # variable names, `?x`
+    precondition: Condition
+    effects: tuple[Effect, ...] = field(default=())
+
+
+def value_of(term: str, env: Env) -> str:
+    return env[term] if term.startswith("?") else term
+
+
+def ground(atom: Atom, env: Env) -> Fact:
+    return (atom.predicate, *(value_of(a, env) for a in atom.args))
+
+
+def holds(condition: Condition, state: State, env: Env) -> bool:
+    match condition:
+        case Atom():
+            return ground(condition, env) in state.facts
+        case Not(arg):
+            return not holds(arg, state, env)
+        case And(args):
+            return all(holds(a, state, env) for a in args)
+        case Or(args):
+            return any(holds(a, state, env) for a in args)
+        case Equal(left, right):
+            return value_of(left, env) == value_of(right, env)
+        case Constant(value):
+            return value
+        case Exists(variables, body):
+            return any(holds(body, state, e) for e in bindings(variables, body, state, env))
+        case Forall(variables, body):
+            return all(holds(body, state, e) for e in bindings(variables, Constant(True), state, env))
+    raise TypeError(f"not a condition: {condition!r}")
+
+
+def bindings(variables: tuple[str, ...], condition: Condition, state: State, env: Env) -> Iterator[dict[str, str]]:
+    """Values of `variables` (extending `env`) that may satisfy `condition`: every binding that does is
+    among them. Positive facts of a conjunction narrow the search; the rest range over all objects."""
+    yield from _join(list(variables), _positive_facts(condition), state, dict(env))
+
+
+def _positive_facts(condition: Condition) -> list[Atom]:
+    if isinstance(condition, Atom):
+        return [condition]
+    if isinstance(condition, And):
+        return [a for arg in condition.args for a in _positive_facts(arg)]
+    return []
+
+
+def _join(free: list[str], facts: list[Atom], state: State, env: dict[str, str]) -> Iterator[dict[str, str]]:
+    unbound = [v for v in free if v not in env]
+    if not unbound:
+        yield env
+        return
+    atom = next((a for a in facts if any(arg in unbound for arg in a.args)), None)
+    if atom is None:
+        variable = unbound[0]
+        for obj in state.objects:
+            yield from _join(free, facts, state, {**env, variable: obj})
+        return
+    rest = [a for a in facts if a is not atom]
+    for fact in state.by_predicate.get(atom.predicate, ()):
+        extended = _match(atom, fact, env)
+        if extended is not None:
+            yield from _join(free, rest, state, extended)
+
+
+def _match(atom: Atom, fact: Fact, env: dict[str, str]) -> dict[str, str] | None:
+    if len(fact) != len(atom.args) + 1:
+        return None
+    extended = dict(env)
+    for term, value in zip(atom.args, fact[1:]):
+        if term.startswith("?"):
+            if extended.setdefault(term, value) != value:
+                return None
+        elif term != value:
+            return None
+    return extended
+
+
+def applicable(schema: Schema, args: tuple[str, ...], state: State) -> bool:
+    if len(args) != len(schema.parameters) or any(a not in state.objects for a in args):
+        return False
+    return holds(schema.precondition, state, dict(zip(schema.parameters, args)))
+
+
+def successor(schema: Schema, args: tuple[str, ...], state: State) -> State:
+    """The state after the action (its precondition is the caller's to check)."""
+    added, deleted = effects_of(schema, dict(zip(schema.parameters, args)), state)
+    return state.changed(deleted, added)
+
+
+def effects_of(schema: Schema, env: Env, state: State) -> tuple[set[Fact], set[Fact]]:
+    """(facts added, facts deleted) by the action with parameters `env`, every condition read in `state`."""
+    added: set[Fact] = set()
+    deleted: set[Fact] = set()
+    for effect in schema.effects:
+        for binding in bindings(effect.variables, effect.condition, state, env):
+            if holds(effect.condition, state, binding):
+                (added if effect.value else deleted).add(ground(effect.fact, binding))
+    return added, deleted

@@ -1,0 +1,88 @@
+"""A primitive set's world: its PDDL domain, the words its plans use for states, and plan lines applied to states.
+
+A plan line is a `Call` of the primitive set; it is the domain action of the same name with the same objects,
+but for `wait(x == s)`: time passes — every process of the domain (an action named `process-…`) whose
+condition holds acts at once — after which x must be in state s. The
+words a set uses for states (`golden`, `boiling`) name domain predicates through its `[world.states]` table; a
+word that names none is a state the world cannot observe, and waiting for it is waiting for time.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+from cook2ltl.reduce.model import TIMER, Call
+from cook2ltl.world.logic import Fact, State, applicable, bindings, effects_of, holds, successor
+from cook2ltl.world.pddl import Domain
+
+WAIT = "wait"
+PROCESS = "process-"
+
+
+@dataclass(frozen=True)
+class Step:
+    """One line applied: the state after it, or why it cannot be applied (the state is then unchanged)."""
+
+    state: State
+    problem: str = ""
+
+    @property
+    def applied(self) -> bool:
+        return not self.problem
+
+
+@dataclass(frozen=True)
+class World:
+    domain: Domain
+    states: Mapping[str, str] = field(default_factory=dict)  # a state word → the predicate it names
+
+    def predicate(self, word: str) -> str | None:
+        """The unary predicate a state word names in this world, or None if the world cannot observe it."""
+        name = self.states.get(word, word)
+        return name if self.domain.predicates.get(name) == 1 else None
+
+    def condition(self, call: Call) -> Fact | None:
+        """What a wait line waits for, as a fact; None for a timer or a state the world cannot observe."""
+        subject, word = call.args
+        predicate = None if subject == TIMER else self.predicate(word)
+        return (predicate, subject) if predicate else None
+
+    def apply(self, state: State, call: Call) -> Step:
+        if call.is_wait:
+            return self._wait(state, call)
+        schema = self.domain.schemas.get(call.name)
+        if schema is None:
+            return Step(state, f"{call.name} is not an action of the world model {self.domain.name!r}")
+        missing = [arg for arg in call.args if arg not in state.objects]
+        if missing:
+            return Step(state, f"there is no {', '.join(missing)} in the kitchen")
+        if not applicable(schema, call.args, state):
+            return Step(state, self.refusal(schema.name, call, state))
+        return Step(successor(schema, call.args, state))
+
+    def passed(self, state: State) -> State:
+        """The state after time passes: every applicable process acts, all read in the same state."""
+        added: set[Fact] = set()
+        deleted: set[Fact] = set()
+        for schema in self.domain.schemas.values():
+            if not schema.name.startswith(PROCESS):
+                continue
+            for env in bindings(schema.parameters, schema.precondition, state, {}):
+                if holds(schema.precondition, state, env):
+                    more, fewer = effects_of(schema, env, state)
+                    added |= more
+                    deleted |= fewer
+        return state.changed(deleted - added, added)
+
+    def _wait(self, state: State, call: Call) -> Step:
+        after = self.passed(state)
+        goal = self.condition(call) if len(call.args) == 2 else None
+        if goal is not None and goal not in after.facts:
+            return Step(state, f"{call.args[0]} never becomes {call.args[1]} here: nothing makes it {goal[0]}")
+        return Step(after)
+
+    def refusal(self, name: str, call: Call, state: State) -> str:
+        from cook2ltl.world.explain import why_not
+
+        return why_not(self.domain.schemas[name], call.args, state)
