@@ -218,6 +218,15 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
                                tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None))
 
 
+def world_validation(grounded: PlanCheck) -> Validation:
+    """The world model's verdict where no kitchen checks the plan: the plan kept applies by construction, so it
+    passes when it reaches the action's intended effect."""
+    from cook2ltl.reduce.validation import LineProblem
+
+    problems = tuple(LineProblem(0, "world model", problem) for problem in grounded.problems)
+    return Validation(grounded.effect_reached, problems, "world model", 0.0)
+
+
 class _Run:
     """The state of one translation: the library's live verbs and the running counts."""
 
@@ -263,20 +272,41 @@ class _Run:
                                       entry_problems=entry.problems, check=grounded)
                 return result, plan_element(plan, primitives) if plan else None
             stale = entry.id if entry else None  # written for another version of the primitive set
-        checked = reduce_checked(action, primitives, self.verbs, self.t.model, self.t.settings, self._expand,
-                                 self.t.validator, self.t.repairs)
-        self._count_reductions(checked)
+        in_world = (self.t.grounding is not None and hasattr(self.t.model, "complete_lines")
+                    and not self.t.settings.comments)  # the line grammar has no comment lines
+        if in_world:
+            checked = self._reduce_in_world(action)
+        else:
+            checked = reduce_checked(action, primitives, self.verbs, self.t.model, self.t.settings, self._expand,
+                                     self.t.validator, self.t.repairs)
         reduction, plan, validation = checked.reduction, checked.plan, checked.validation
         grounded = self._ground(action, plan, "model")
         if grounded is not None:
             self._count(model_lines_applied=int(bool(plan) and grounded.applicable))
-            if grounded.plan != plan:  # lines dropped or completed: the checked plan is what is learnt
-                reduction = replace(reduction, body=grounded.plan)
-                plan = grounded.plan
+            changed = grounded.plan != plan  # lines dropped or completed: the checked plan is what is learnt
+            plan = grounded.plan
+            if self.t.validator is not None and plan and (in_world or changed):
+                validation = self.t.validator.validate(action, plan)  # the plan as it will run, in THOR
+            elif self.t.validator is None:
+                validation = world_validation(grounded)
+            checked = replace(checked, plan=plan, validation=validation)
+        self._count_reductions(checked)
         if self.uses_library and not self._awaiting_review(action):
-            reduction = self._learn(action, reduction, plan, validation, stale)
+            learnt = reduction if grounded is None else replace(reduction, body=plan)
+            reduction = replace(reduction, entry_id=self._learn(action, learnt, plan, validation, stale).entry_id)
         result = ActionResult(frame_index, reduction, plan, validation, checked.failed, check=grounded)
         return result, plan_element(plan, primitives) if plan else None
+
+    def _reduce_in_world(self, action: Action) -> Checked:
+        """State-aware decoding: every line the model writes can be applied where the recipe has got to."""
+        from cook2ltl.reduce.grounded import reduce_in_world
+        from cook2ltl.world.effects import intended_effect
+
+        world = self.t.grounding.world
+        effect = intended_effect(action, world, self.world_state) or ()
+        reduction = reduce_in_world(action, self.t.primitives, [v.verb for v in self.verbs], self.t.model,
+                                    self.t.settings, world, self.world_state, effect)
+        return Checked(reduction, reduction.body, None)
 
     def start(self, parsed: ParsedRecipe) -> None:
         """The kitchen before the first step, holding every object the recipe names."""

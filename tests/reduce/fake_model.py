@@ -36,6 +36,26 @@ class ScriptedModel:
         text = "".join(f"    {line}\n" for line in lines) + "\n"
         return Completion(text, Usage(prompt_tokens=len(prompt.split()), completion_tokens=len(text.split()), seconds=0.01))
 
+    def complete_lines(self, static: str, dynamic: str, next_lines, tokens_per_line: int) -> Completion:
+        """Like a model under state-aware decoding: each scripted line the world allows is written, the others
+        skipped; a blank line when none of the rest is allowed."""
+        prompt = static + dynamic
+        verb = _last_header(prompt).removeprefix("def ").split("(")[0]
+        self.prompts.append(prompt)
+        self.statics.append(static)
+        answer = self.answers.get(verb, "")
+        script = [line.strip() for line in (answer if isinstance(answer, str) else answer[0]).strip().splitlines()]
+        text = ""
+        while (options := next_lines(text)) is not None:
+            self.grammars.append("\n".join(options))
+            chosen = next((line for line in script if line in options), None)
+            if chosen is None:
+                break
+            script = script[script.index(chosen) + 1:]
+            text += f"    {chosen}\n"
+        return Completion(text + "\n", Usage(prompt_tokens=len(prompt.split()), completion_tokens=len(text.split()),
+                                             seconds=0.01))
+
     @property
     def calls(self) -> int:
         return len(self.prompts)

@@ -54,6 +54,17 @@ class LanguageModel(Protocol):
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
                  stop: Callable[[str], bool] | None = None) -> Completion: ...
 
+    def complete_lines(self, static: str, dynamic: str, next_lines: Callable[[str], list[str] | None],
+                       tokens_per_line: int) -> Completion:
+        """Write indented lines one at a time, each one of `next_lines(text so far)` (or a blank line that
+        ends the body), until `next_lines` gives None."""
+
+
+def line_grammar(options: list[str]) -> str:
+    """One line: an indented call among `options`, or a blank line (the body ends)."""
+    calls = " | ".join('"' + option.replace("\\", "\\\\").replace('"', '\\"') + '"' for option in options)
+    return f'root ::= "    " call "\\n" | "\\n"\ncall ::= {calls}\n'
+
 
 class LlamaModel:
     """A GGUF model run by llama-cpp-python, decoding greedily under the grammar (cook2ltl.reduce.decoding).
@@ -105,6 +116,35 @@ class LlamaModel:
         self._check(deadline)
         return Completion(self._text(generated),
                           Usage(len(tokens), len(generated), time.perf_counter() - started))
+
+    def complete_lines(self, static: str, dynamic: str, next_lines: Callable[[str], list[str] | None],
+                       tokens_per_line: int) -> Completion:
+        llama = self._loaded()
+        from cook2ltl.reduce.decoding import greedy_tokens
+
+        started = time.perf_counter()
+        prefix = llama.tokenize(static.encode())
+        tokens = prefix + llama.tokenize(dynamic.encode(), add_bos=False)
+        deadline = started + self.time_limit
+        self._check(deadline)
+        self._keep_only(llama, prefix, static, deadline)
+        generated: list[int] = []
+        text = ""
+
+        def line_open(ids: list[int]) -> bool:
+            return not (self.cancel.is_set() or time.perf_counter() > deadline or self._text(ids).endswith("\n"))
+
+        while len(tokens) + len(generated) + tokens_per_line < llama.n_ctx():
+            options = next_lines(text)
+            if not options:
+                break
+            line = list(greedy_tokens(llama, line_grammar(options), tokens + generated, tokens_per_line, line_open))
+            self._check(deadline)
+            generated += line
+            text = self._text(generated)
+            if not line or not text.endswith("\n") or text.endswith("\n\n") or text == "\n":
+                break  # a blank line: the model ended the body
+        return Completion(text, Usage(len(tokens), len(generated), time.perf_counter() - started))
 
     def _text(self, ids: list[int]) -> str:
         return self._llama.detokenize(ids).decode("utf-8", errors="ignore")

@@ -1,0 +1,49 @@
+"""State-aware decoding: the model writes a plan line by line, each line chosen among those the world allows.
+
+Before every line the grammar admits only the calls that can be applied in the state the lines so far
+reached, from where the recipe had got to (`world.affordances`). The model stops, or is stopped, when the
+action's intended effect holds; what it leaves undone the planner completes (`world.check`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from cook2ltl.reduce.body import read_body
+from cook2ltl.reduce.grammar import vocabulary
+from cook2ltl.reduce.llm import LanguageModel
+from cook2ltl.reduce.model import Action, PrimitiveSet, Reduction, Source
+from cook2ltl.reduce.prompt import build_prompt
+from cook2ltl.reduce.reduction import TOKENS_PER_LINE, ReductionSettings
+from cook2ltl.world.affordances import admissible_calls
+from cook2ltl.world.logic import Fact, State
+from cook2ltl.world.planner import reached
+from cook2ltl.world.world import World
+
+REPEATS = 2  # the same line this many times in a row ends the plan: a greedy model is looping
+
+
+def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Sequence[str], model: LanguageModel,
+                    settings: ReductionSettings, world: World, state: State, effect: Sequence[Fact]) -> Reduction:
+    vocab = vocabulary(primitives, (), action)
+    prompt = build_prompt(primitives, library_verbs, action, comments=False)
+
+    def next_lines(text: str) -> list[str] | None:
+        calls, _ = read_body(text)
+        if len(calls) >= settings.max_lines or _looping(calls):
+            return None
+        now = state
+        for call in calls:
+            now = world.apply(now, call).state
+        if effect and all(reached(now, fact) for fact in effect):
+            return None
+        return [call.text() for call in admissible_calls(world, now, primitives, vocab.objects, vocab.states,
+                                                         vocab.durations)] or None
+
+    completion = model.complete_lines(prompt.static, prompt.dynamic, next_lines, TOKENS_PER_LINE)
+    calls, unread = read_body(completion.text)
+    return Reduction(action, calls, Source.LLM, completion.usage, unread, prompt.digest)
+
+
+def _looping(calls) -> bool:
+    return len(calls) >= REPEATS and len(set(calls[-REPEATS:])) == 1
