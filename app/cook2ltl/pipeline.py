@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import threading
 import time
-from dataclasses import dataclass, replace
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from typing import Iterator
 
@@ -117,6 +118,8 @@ class Translation:
     formula: Formula  # every step in sequence
     stats: Stats
     validating: bool = False  # whether new reductions were checked in the kitchen
+    world_start: object | None = None  # the world model's state before the first step (a world.logic.State)
+    world_binding: Mapping[str, str] = field(default_factory=dict)  # THOR: the objectId each name stands for
 
 
 @dataclass(frozen=True)
@@ -215,7 +218,8 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
         yield StepDone(steps[-1])
     stats = replace(state.stats, seconds=time.perf_counter() - started)
     yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
-                               tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None))
+                               tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None,
+                               state.world_start, state.world_binding))
 
 
 def world_validation(grounded: PlanCheck) -> Validation:
@@ -237,7 +241,8 @@ class _Run:
         if self.uses_library and translator.library is None:
             raise ValueError("the AR+A variant needs a library")
         self.verbs: list[LibraryVerb] = []
-        self.world_state = None  # the world model's state where the recipe has got to
+        self.world_state = self.world_start = None  # the world model's state: where the recipe has got to
+        self.world_binding: dict[str, str] = {}  # in a THOR kitchen, the objectId each name stands for
         self._refresh()
 
     def action(self, frame_index: int, action: Action) -> tuple[ActionResult, Element | None]:
@@ -313,7 +318,9 @@ class _Run:
         grounding = self.t.grounding
         if grounding is not None:
             names = [o for step in parsed.steps for frame in step.frames for a in actions_of(frame) for o in a.objects]
-            self.world_state = grounding.start(names)
+            start = grounding.start(names)
+            self.world_state = self.world_start = start.state
+            self.world_binding = dict(start.binding)
 
     def _ground(self, action: Action, plan: tuple[Call, ...], origin: str) -> PlanCheck | None:
         """The plan checked where the recipe has got to, completed to the action's effect; the run moves on."""

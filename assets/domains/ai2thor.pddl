@@ -22,16 +22,26 @@
 ; cutting food inside a running heat source. So `wait` (THOR's Pass) changes nothing: settle has acted.
 ; Temperature stays when a thing is taken out or its heat source switched off.
 ;
-; Not modelled: geometry (the executor teleports next to what it acts on; nothing is out of reach but
-; what a closed receptacle shuts away), the several pieces slicing makes (the object stands for all of
-; them; the kitchen picks one piece per call), nesting deeper than two levels, a knob switching several
-; burners (THOR's kitchens have one burner per knob).
+; Not modelled: geometry (the executor teleports next to what it acts on: nothing is out of reach but
+; what a closed receptacle shuts away), the several pieces cutting makes (the object stands for all of
+; them), nesting deeper than two levels, a knob switching several burners (each of THOR's knobs switches
+; one), THOR's own heating and cooling over time (the embedded kitchen's settle is instant).
 ;
-; Agreement with the embedded kitchen (tests/world/test_thor_world.py, random plans in several scenes):
-; the remaining disagreements, all from the several pieces of a cut object, are listed in that test's
-; ALLOWED table with their reasons. One choice differs from the kitchen on purpose: breaking a held
-; egg (an object that splits) is refused here; the kitchen replaces the held object by its pieces and
-; its player then fails on the vanished held object.
+; Agreement with the embedded kitchen: tests/world/test_thor_world.py runs 320 random plans (2310 lines,
+; 1687 of them run by the kitchen) in 8 of the 30 scenes, and seven cooking scripts, through the model and
+; through cook2ltl.kitchen.executor on the embedded kitchen. The model accepts exactly the lines the
+; kitchen runs, and after each the facts it predicts are the ones read back from THOR's metadata, but for
+; 17 facts (15 in the random plans), all from one cause:
+;   - several pieces: cutting makes 7-10 pieces (bread, tomato, potato, ...) and each later call acts on
+;     one of them, of the kitchen's choosing, while a name's predicate holds when it holds of any piece.
+;     After pick_up(bread) the pieces left behind are still `in` the counter (15 times); after heating
+;     one piece, bread is hot and also, in the pieces left out, at room temperature (twice). The test
+;     allows these, and the like (a piece in reach where the model's one is shut away), for cut names only.
+; One choice differs from the kitchen on purpose: breaking a held egg (anything with a slicing rule)
+; is refused here, as cutting a held thing is; the kitchen replaces the held egg by its piece and its
+; player then fails on the vanished held object (a bug there, reported; the test does not send it).
+; Also not modelled, as THOR's kitchens never have them: a running heat source inside a cold source (the
+; kitchen lets heat win), a coffee machine standing in a sink basin (the kitchen lets coffee win).
 (define (domain ai2thor)
   (:requirements :strips :typing :negative-preconditions :disjunctive-preconditions :equality
                  :existential-preconditions :universal-preconditions :conditional-effects)
@@ -49,89 +59,105 @@
     (hand-empty) (holding ?x - thing) (in ?x - thing ?r - thing) (opened ?x - thing) (on ?x - thing)
     (hot ?x - thing) (cold ?x - thing) (room_temperature ?x - thing) (cooked ?x - thing)
     (sliced ?x - thing) (broken ?x - thing) (filled ?x - thing) (filled-with ?x - thing ?l - thing)
-    (used_up ?x - thing) (dirty ?x - thing))
+    (used_up ?x - thing) (dirty ?x - thing)
+    ; kept up to date by the actions, so that no precondition needs a negated quantifier (Fast Downward's
+    ; translator takes minutes over those): shut inside a closed receptacle, or inside something inside one;
+    ; inside the held object, or inside something inside it
+    (enclosed ?x - thing) (carried ?x - thing))
 
-  ; "Reachable" below: not shut inside a closed receptacle, nor inside something inside one.
+  ; "Reachable" below: not enclosed (not shut inside a closed receptacle, nor inside something inside one).
 
   (:action pick_up
     :parameters (?x - thing)
     :precondition (and (pickupable ?x) (hand-empty) (not (broken ?x))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     ; what the thing carries stays in it; nothing changes temperature on the way out
     :effect (and (holding ?x) (not (hand-empty))
-      (forall (?c - thing) (when (in ?x ?c) (not (in ?x ?c))))))
+      (forall (?c - thing) (when (in ?x ?c) (not (in ?x ?c))))
+      (forall (?z - thing) (when (in ?z ?x) (carried ?z)))
+      (forall (?z ?c - thing) (when (and (in ?z ?c) (in ?c ?x)) (carried ?z)))))
 
   ; Put the held thing in or on ?r; settle then acts on it and on what it carries.
   (:action put
     :parameters (?x - thing ?r - thing)
     :precondition (and (holding ?x) (not (= ?x ?r)) (receptacle ?r) (fits ?x ?r)
-      (not (in ?r ?x)) (not (exists (?c - thing) (and (in ?r ?c) (in ?c ?x))))
+      (not (carried ?r))
       (not (and (openable ?r) (not (opened ?r))))
-      (not (exists (?c - thing) (and (in ?r ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?r ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?r)))
     :effect (and (in ?x ?r) (not (holding ?x)) (hand-empty)
-      ; ?r is, or stands in, a running heat source: ?x and its load get hot, cookable ones cooked
-      (forall (?z - thing)
-        (when (and (exists (?h - thing) (and (heat-source ?h) (on ?h) (or (= ?h ?r) (in ?r ?h))))
-                   (or (= ?z ?x) (in ?z ?x) (exists (?w - thing) (and (in ?z ?w) (in ?w ?x)))))
-              (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
-      (forall (?z - thing)
-        (when (and (cookable ?z)
-                   (exists (?h - thing) (and (heat-source ?h) (on ?h) (or (= ?h ?r) (in ?r ?h))))
-                   (or (= ?z ?x) (in ?z ?x) (exists (?w - thing) (and (in ?z ?w) (in ?w ?x)))))
-              (cooked ?z)))
-      ; a running coffee machine fills an empty cup with coffee
-      (forall (?z ?l - thing)
-        (when (and (brew ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))
-                   (exists (?h - thing) (and (brewer ?h) (heat-source ?h) (on ?h) (or (= ?h ?r) (in ?r ?h))))
-                   (or (= ?z ?x) (in ?z ?x) (exists (?w - thing) (and (in ?z ?w) (in ?w ?x)))))
-              (and (filled ?z) (filled-with ?z ?l))))
-      ; in a cold source (and no running heat source): cold
-      (forall (?z - thing)
-        (when (and (exists (?f - thing) (and (cold-source ?f) (or (= ?f ?r) (in ?r ?f))))
-                   (not (exists (?h - thing) (and (heat-source ?h) (on ?h) (or (= ?h ?r) (in ?r ?h)))))
-                   (or (= ?z ?x) (in ?z ?x) (exists (?w - thing) (and (in ?z ?w) (in ?w ?x)))))
-              (and (cold ?z) (not (hot ?z)) (not (room_temperature ?z)))))
-      ; in a sink basin under its running faucet: rinsed clean, and an empty cup filled with water
-      (forall (?z - thing)
-        (when (and (exists (?f ?b - thing) (and (rinses ?f ?b) (on ?f) (or (= ?b ?r) (in ?r ?b))))
-                   (or (= ?z ?x) (in ?z ?x) (exists (?w - thing) (and (in ?z ?w) (in ?w ?x)))))
-              (not (dirty ?z))))
-      (forall (?z ?l - thing)
-        (when (and (tap-liquid ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))
-                   (exists (?f ?b - thing) (and (rinses ?f ?b) (on ?f) (or (= ?b ?r) (in ?r ?b))))
-                   (not (exists (?h - thing) (and (brewer ?h) (heat-source ?h) (on ?h) (or (= ?h ?r) (in ?r ?h)))))
-                   (or (= ?z ?x) (in ?z ?x) (exists (?w - thing) (and (in ?z ?w) (in ?w ?x)))))
-              (and (filled ?z) (filled-with ?z ?l))))))
+      (forall (?z - thing) (when (in ?z ?x) (not (carried ?z))))
+      (forall (?z ?c - thing) (when (and (in ?z ?c) (in ?c ?x)) (not (carried ?z))))
+      ; settle, for the place (?r runs, or ?r sits in what runs) and for the load (?x, what it holds,
+      ; what that holds), each case written out: planners ground disjunctions and equalities badly
+      (when (and (heat-source ?r) (on ?r)) (and (hot ?x) (not (cold ?x)) (not (room_temperature ?x))))
+      (forall (?z - thing) (when (and (heat-source ?r) (on ?r) (in ?z ?x)) (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
+      (forall (?z ?w - thing) (when (and (heat-source ?r) (on ?r) (in ?z ?w) (in ?w ?x)) (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
+      (forall (?h - thing) (when (and (heat-source ?h) (on ?h) (in ?r ?h)) (and (hot ?x) (not (cold ?x)) (not (room_temperature ?x)))))
+      (forall (?z ?h - thing) (when (and (heat-source ?h) (on ?h) (in ?r ?h) (in ?z ?x)) (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
+      (forall (?z ?w ?h - thing) (when (and (heat-source ?h) (on ?h) (in ?r ?h) (in ?z ?w) (in ?w ?x)) (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
+      (when (and (heat-source ?r) (on ?r) (cookable ?x)) (cooked ?x))
+      (forall (?z - thing) (when (and (heat-source ?r) (on ?r) (in ?z ?x) (cookable ?z)) (cooked ?z)))
+      (forall (?z ?w - thing) (when (and (heat-source ?r) (on ?r) (in ?z ?w) (in ?w ?x) (cookable ?z)) (cooked ?z)))
+      (forall (?h - thing) (when (and (heat-source ?h) (on ?h) (in ?r ?h) (cookable ?x)) (cooked ?x)))
+      (forall (?z ?h - thing) (when (and (heat-source ?h) (on ?h) (in ?r ?h) (in ?z ?x) (cookable ?z)) (cooked ?z)))
+      (forall (?z ?w ?h - thing) (when (and (heat-source ?h) (on ?h) (in ?r ?h) (in ?z ?w) (in ?w ?x) (cookable ?z)) (cooked ?z)))
+      (forall (?l - thing) (when (and (brewer ?r) (heat-source ?r) (on ?r) (brew ?l) (fillable ?x) (not (filled ?x)) (not (broken ?x))) (and (filled ?x) (filled-with ?x ?l))))
+      (forall (?z ?l - thing) (when (and (brewer ?r) (heat-source ?r) (on ?r) (in ?z ?x) (brew ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (forall (?z ?w ?l - thing) (when (and (brewer ?r) (heat-source ?r) (on ?r) (in ?z ?w) (in ?w ?x) (brew ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (forall (?h ?l - thing) (when (and (brewer ?h) (heat-source ?h) (on ?h) (in ?r ?h) (brew ?l) (fillable ?x) (not (filled ?x)) (not (broken ?x))) (and (filled ?x) (filled-with ?x ?l))))
+      (forall (?z ?h ?l - thing) (when (and (brewer ?h) (heat-source ?h) (on ?h) (in ?r ?h) (in ?z ?x) (brew ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (forall (?z ?w ?h ?l - thing) (when (and (brewer ?h) (heat-source ?h) (on ?h) (in ?r ?h) (in ?z ?w) (in ?w ?x) (brew ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (when (and (cold-source ?r)) (and (cold ?x) (not (hot ?x)) (not (room_temperature ?x))))
+      (forall (?z - thing) (when (and (cold-source ?r) (in ?z ?x)) (and (cold ?z) (not (hot ?z)) (not (room_temperature ?z)))))
+      (forall (?z ?w - thing) (when (and (cold-source ?r) (in ?z ?w) (in ?w ?x)) (and (cold ?z) (not (hot ?z)) (not (room_temperature ?z)))))
+      (forall (?h - thing) (when (and (cold-source ?h) (in ?r ?h)) (and (cold ?x) (not (hot ?x)) (not (room_temperature ?x)))))
+      (forall (?z ?h - thing) (when (and (cold-source ?h) (in ?r ?h) (in ?z ?x)) (and (cold ?z) (not (hot ?z)) (not (room_temperature ?z)))))
+      (forall (?z ?w ?h - thing) (when (and (cold-source ?h) (in ?r ?h) (in ?z ?w) (in ?w ?x)) (and (cold ?z) (not (hot ?z)) (not (room_temperature ?z)))))
+      (forall (?f - thing) (when (and (rinses ?f ?r) (on ?f) (dirty ?x)) (not (dirty ?x))))
+      (forall (?z ?f - thing) (when (and (rinses ?f ?r) (on ?f) (in ?z ?x) (dirty ?z)) (not (dirty ?z))))
+      (forall (?z ?w ?f - thing) (when (and (rinses ?f ?r) (on ?f) (in ?z ?w) (in ?w ?x) (dirty ?z)) (not (dirty ?z))))
+      (forall (?f ?b - thing) (when (and (rinses ?f ?b) (on ?f) (in ?r ?b) (dirty ?x)) (not (dirty ?x))))
+      (forall (?z ?f ?b - thing) (when (and (rinses ?f ?b) (on ?f) (in ?r ?b) (in ?z ?x) (dirty ?z)) (not (dirty ?z))))
+      (forall (?z ?w ?f ?b - thing) (when (and (rinses ?f ?b) (on ?f) (in ?r ?b) (in ?z ?w) (in ?w ?x) (dirty ?z)) (not (dirty ?z))))
+      (forall (?f ?l - thing) (when (and (rinses ?f ?r) (on ?f) (tap-liquid ?l) (fillable ?x) (not (filled ?x)) (not (broken ?x))) (and (filled ?x) (filled-with ?x ?l))))
+      (forall (?z ?f ?l - thing) (when (and (rinses ?f ?r) (on ?f) (in ?z ?x) (tap-liquid ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (forall (?z ?w ?f ?l - thing) (when (and (rinses ?f ?r) (on ?f) (in ?z ?w) (in ?w ?x) (tap-liquid ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (forall (?f ?b ?l - thing) (when (and (rinses ?f ?b) (on ?f) (in ?r ?b) (tap-liquid ?l) (fillable ?x) (not (filled ?x)) (not (broken ?x))) (and (filled ?x) (filled-with ?x ?l))))
+      (forall (?z ?f ?b ?l - thing) (when (and (rinses ?f ?b) (on ?f) (in ?r ?b) (in ?z ?x) (tap-liquid ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))
+      (forall (?z ?w ?f ?b ?l - thing) (when (and (rinses ?f ?b) (on ?f) (in ?r ?b) (in ?z ?w) (in ?w ?x) (tap-liquid ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))) (and (filled ?z) (filled-with ?z ?l))))))
 
   (:action drop
     :parameters (?x - thing)
     :precondition (holding ?x)
     :effect (and (not (holding ?x)) (hand-empty)
-      (forall (?f - thing) (when (floor ?f) (in ?x ?f)))))
+      (forall (?f - thing) (when (floor ?f) (in ?x ?f)))
+      (forall (?z - thing) (when (in ?z ?x) (not (carried ?z))))
+      (forall (?z ?c - thing) (when (and (in ?z ?c) (in ?c ?x)) (not (carried ?z))))))
 
   (:action open
     :parameters (?x - thing)
     :precondition (and (openable ?x) (not (opened ?x)) (not (and (toggleable ?x) (on ?x)))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
-    :effect (opened ?x))
+      (not (enclosed ?x)))
+    :effect (and (opened ?x)
+      (forall (?z - thing) (when (in ?z ?x) (not (enclosed ?z))))
+      ; one level further only through what does not shut itself
+      (forall (?z ?c - thing) (when (and (in ?z ?c) (in ?c ?x) (not (openable ?c))) (not (enclosed ?z))))
+      (forall (?z ?c - thing) (when (and (in ?z ?c) (in ?c ?x) (opened ?c)) (not (enclosed ?z))))))
 
   (:action close
     :parameters (?x - thing)
     :precondition (and (openable ?x) (opened ?x)
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
-    :effect (not (opened ?x)))
+      (not (enclosed ?x)))
+    :effect (and (not (opened ?x))
+      (forall (?z - thing) (when (in ?z ?x) (enclosed ?z)))
+      (forall (?z ?c - thing) (when (and (in ?z ?c) (in ?c ?x)) (enclosed ?z)))))
 
   ; Breaking: an object with a slicing rule splits as when cut (an egg into a cracked egg, see slice);
   ; anything else is broken and spills what it held.
   (:action break
     :parameters (?x - thing)
     :precondition (and (breakable ?x) (not (broken ?x)) (not (and (splits ?x) (holding ?x)))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     :effect (and (not (filled ?x))
       (forall (?l - thing) (when (filled-with ?x ?l) (not (filled-with ?x ?l))))
       (when (not (splits ?x)) (broken ?x))
@@ -152,8 +178,7 @@
   (:action cook
     :parameters (?x - thing)
     :precondition (and (cookable ?x) (not (cooked ?x))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     :effect (cooked ?x))
 
   ; Cutting needs a knife in hand and the food put down. The food then stands for its pieces, in its
@@ -161,12 +186,9 @@
   ; running heat source), at its temperature, fitting where the pieces fit, nothing else.
   (:action slice
     :parameters (?x - thing)
-    :precondition (and (sliceable ?x) (splits ?x) (not (holding ?x))
-      (not (exists (?c - thing) (and (in ?x ?c) (holding ?c))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (holding ?d))))
+    :precondition (and (sliceable ?x) (splits ?x) (not (holding ?x)) (not (carried ?x))
       (exists (?k - thing) (and (cutter ?k) (holding ?k)))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     :effect (and (sliced ?x) (pickupable ?x) (not (sliceable ?x)) (not (breakable ?x)) (not (splits ?x))
       (not (pieces-cookable ?x)) (not (fillable ?x)) (not (dirtyable ?x)) (not (usable ?x))
       (not (receptacle ?x)) (not (openable ?x)) (not (toggleable ?x)) (not (broken ?x)) (not (filled ?x))
@@ -186,34 +208,42 @@
     :parameters (?x - thing)
     :precondition (or
       (and (toggleable ?x) (not (on ?x)) (not (broken ?x)) (not (and (openable ?x) (opened ?x)))
-        (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-        (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+        (not (enclosed ?x)))
       (and (not (toggleable ?x))
         (exists (?k - thing) (and (controls ?k ?x) (toggleable ?k) (not (on ?k)) (not (broken ?k))
           (not (and (openable ?k) (opened ?k)))
-          (not (exists (?c - thing) (and (in ?k ?c) (openable ?c) (not (opened ?c)))))
-          (not (exists (?c ?d - thing) (and (in ?k ?c) (in ?c ?d) (openable ?d) (not (opened ?d)))))))))
+          (not (enclosed ?k))))))
     :effect (and (on ?x)
       (forall (?k - thing) (when (and (controls ?k ?x) (not (toggleable ?x))) (on ?k)))
       (forall (?b - thing) (when (controls ?x ?b) (on ?b)))
-      ; settle: what is in a heat source now running gets hot, and cooked if cookable
+      ; settle: what is in a heat source now running (?x, or the burner its knob switches), or in
+      ; something there, gets hot, and cooked if cookable
       (forall (?z - thing)
-        (when (exists (?h - thing) (and (heat-source ?h) (or (= ?h ?x) (controls ?x ?h))
+        (when (and (heat-source ?x) (or (in ?z ?x) (exists (?c - thing) (and (in ?z ?c) (in ?c ?x)))))
+              (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
+      (forall (?z - thing)
+        (when (exists (?h - thing) (and (controls ?x ?h) (heat-source ?h)
                 (or (in ?z ?h) (exists (?c - thing) (and (in ?z ?c) (in ?c ?h))))))
               (and (hot ?z) (not (cold ?z)) (not (room_temperature ?z)))))
       (forall (?z - thing)
+        (when (and (cookable ?z) (heat-source ?x)
+                   (or (in ?z ?x) (exists (?c - thing) (and (in ?z ?c) (in ?c ?x)))))
+              (cooked ?z)))
+      (forall (?z - thing)
         (when (and (cookable ?z)
-                   (exists (?h - thing) (and (heat-source ?h) (or (= ?h ?x) (controls ?x ?h))
+                   (exists (?h - thing) (and (controls ?x ?h) (heat-source ?h)
                      (or (in ?z ?h) (exists (?c - thing) (and (in ?z ?c) (in ?c ?h)))))))
               (cooked ?z)))
+      ; a coffee machine now running fills an empty cup in it with coffee
       (forall (?z ?l - thing)
-        (when (and (brew ?l) (brewer ?x) (heat-source ?x) (fillable ?z) (not (filled ?z)) (not (broken ?z))
+        (when (and (brew ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z)) (brewer ?x) (heat-source ?x)
                    (or (in ?z ?x) (exists (?c - thing) (and (in ?z ?c) (in ?c ?x)))))
               (and (filled ?z) (filled-with ?z ?l))))
       ; a faucet now running rinses what is in its basin, and fills an empty cup there with water
       (forall (?z - thing)
-        (when (exists (?b - thing) (and (rinses ?x ?b)
-                (or (in ?z ?b) (exists (?c - thing) (and (in ?z ?c) (in ?c ?b))))))
+        (when (and (dirty ?z)
+                   (exists (?b - thing) (and (rinses ?x ?b)
+                     (or (in ?z ?b) (exists (?c - thing) (and (in ?z ?c) (in ?c ?b)))))))
               (not (dirty ?z))))
       (forall (?z ?l - thing)
         (when (and (tap-liquid ?l) (fillable ?z) (not (filled ?z)) (not (broken ?z))
@@ -225,12 +255,10 @@
     :parameters (?x - thing)
     :precondition (or
       (and (toggleable ?x) (on ?x) (not (broken ?x))
-        (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-        (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+        (not (enclosed ?x)))
       (and (not (toggleable ?x))
         (exists (?k - thing) (and (controls ?k ?x) (toggleable ?k) (on ?k) (not (broken ?k))
-          (not (exists (?c - thing) (and (in ?k ?c) (openable ?c) (not (opened ?c)))))
-          (not (exists (?c ?d - thing) (and (in ?k ?c) (in ?c ?d) (openable ?d) (not (opened ?d)))))))))
+          (not (enclosed ?k))))))
     :effect (and (not (on ?x))
       (forall (?k - thing) (when (and (controls ?k ?x) (not (toggleable ?x))) (not (on ?k))))
       (forall (?b - thing) (when (controls ?x ?b) (not (on ?b))))))
@@ -238,23 +266,20 @@
   (:action use
     :parameters (?x - thing)
     :precondition (and (usable ?x) (not (used_up ?x))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     :effect (used_up ?x))
 
   (:action fill
     :parameters (?x - thing ?l - thing)
     :precondition (and (liquid ?l) (fillable ?x) (not (broken ?x)) (not (filled ?x))
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     :effect (and (filled ?x) (filled-with ?x ?l)))
 
   ; Emptied where a running coffee machine or faucet fills it, it is filled again at once.
   (:action empty
     :parameters (?x - thing)
     :precondition (and (fillable ?x) (filled ?x)
-      (not (exists (?c - thing) (and (in ?x ?c) (openable ?c) (not (opened ?c)))))
-      (not (exists (?c ?d - thing) (and (in ?x ?c) (in ?c ?d) (openable ?d) (not (opened ?d))))))
+      (not (enclosed ?x)))
     :effect (and (not (filled ?x))
       (forall (?l - thing) (when (filled-with ?x ?l) (not (filled-with ?x ?l))))
       (forall (?l - thing)
@@ -265,9 +290,7 @@
       (forall (?l - thing)
         (when (and (tap-liquid ?l) (not (broken ?x))
                    (exists (?f ?b - thing) (and (rinses ?f ?b) (on ?f)
-                     (or (in ?x ?b) (exists (?c - thing) (and (in ?x ?c) (in ?c ?b))))))
-                   (not (exists (?h - thing) (and (brewer ?h) (heat-source ?h) (on ?h)
-                     (or (in ?x ?h) (exists (?c - thing) (and (in ?x ?c) (in ?c ?h))))))))
+                     (or (in ?x ?b) (exists (?c - thing) (and (in ?x ?c) (in ?c ?b)))))))
               (and (filled ?x) (filled-with ?x ?l))))))
 
   ; THOR's Pass. `wait(x == state)` is this action, after which x must be in state; nothing happens

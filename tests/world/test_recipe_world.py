@@ -38,7 +38,7 @@ def test_our_evaluator_agrees_with_unified_planning_on_random_plans(kitchen):
     from cook2ltl.world.planner import focus
 
     world = kitchen.world
-    start = focus(kitchen.start(["egg", "milk", "butter"]), (("in", "egg", "pot"),), kitchen.planner.kit)
+    start = focus(kitchen.start(["egg", "milk", "butter"]).state, (("in", "egg", "pot"),), kitchen.planner.kit)
     problem = build_problem(world.domain.path, start, ())
     actions = {a.name: a for a in problem.actions}
     objects = {o.name: o for o in problem.all_objects}
@@ -69,7 +69,7 @@ def test_our_evaluator_agrees_with_unified_planning_on_random_plans(kitchen):
 
 
 def test_the_planner_writes_a_whole_plan_that_reaches_the_effect(kitchen):
-    start = kitchen.start(["eggs"])
+    start = kitchen.start(["eggs"]).state
     effect = intended_effect(act("boil", what="eggs"), kitchen.world, start)
     assert effect == (("boiled", "eggs"),)
     checked = check_plan(kitchen.world, start, (), effect, kitchen.planner)
@@ -79,7 +79,7 @@ def test_the_planner_writes_a_whole_plan_that_reaches_the_effect(kitchen):
 
 
 def test_a_plan_that_does_nothing_does_not_pass_and_the_planner_completes_it(kitchen):
-    start = kitchen.start([])
+    start = kitchen.start([]).state
     effect = intended_effect(act("preheat", what="oven", temperature="350_f"), kitchen.world, start)
     assert effect == (("hot", "oven"),)
     alone = check_plan(kitchen.world, start, (Call("open", ("oven",)),), effect, None)
@@ -92,7 +92,7 @@ def test_a_plan_that_does_nothing_does_not_pass_and_the_planner_completes_it(kit
 
 
 def test_no_line_acts_on_something_without_the_affordance(kitchen):
-    state = kitchen.start(["tomato"])
+    state = kitchen.start(["tomato"]).state
     offered = {c.text() for c in admissible_calls(kitchen.world, state, PRIMITIVES, state.objects, PRIMITIVES.states, ())}
     assert "pick_up(tomato)" in offered and "pick_up(oven)" not in offered and "turn_on(knife)" not in offered
     assert "put(tomato, pot)" not in offered  # not in hand
@@ -105,7 +105,7 @@ def test_no_line_acts_on_something_without_the_affordance(kitchen):
 
 
 def test_what_is_shut_in_the_fridge_must_be_let_out_first(kitchen):
-    state = kitchen.start(["milk"])
+    state = kitchen.start(["milk"]).state
     world = kitchen.world
     for call in ("open(fridge)", "pick_up(bowl)", "put(bowl, fridge)", "close(fridge)"):
         name, args = call.rstrip(")").split("(")

@@ -31,8 +31,11 @@ PAPER = {
 }
 TASK_SETS = ("paper", "suite", "all", "smoke")  # smoke: the first paper task only
 REPAIR = "AR+A repair"
-# Each column: the pipeline's variant and how many repairs a plan the kitchen refuses gets (None: not checked).
-COLUMNS = {"AR": (Variant.AR, None), "AR+A": (Variant.AR_LIBRARY, None), REPAIR: (Variant.AR_LIBRARY, 2)}
+WORLD = "AR+A world"
+# Each column: the pipeline's variant, how many repairs a plan the kitchen refuses gets (None: not checked),
+# and whether plans are decoded, checked and completed in the world model (the grounding ablation).
+COLUMNS = {"AR": (Variant.AR, None, False), "AR+A": (Variant.AR_LIBRARY, None, False),
+           REPAIR: (Variant.AR_LIBRARY, 2, False), WORLD: (Variant.AR_LIBRARY, None, True)}
 
 
 def choose_tasks(which: str):
@@ -46,9 +49,12 @@ def choose_tasks(which: str):
 
 def run_task(kitchen, planner, task) -> dict:
     """Plan the task's instruction, roll the plan out, check the goal."""
+    from cook2ltl.kitchen.tasks import set_up
     from cook2ltl.kitchen.trial import TrialDone, explain, run_trial
 
-    plan = planner.plan(task.instruction)
+    kitchen.reset(task.scene)
+    set_up(kitchen, task)  # the world model starts from the kitchen as the task leaves it (a dirty mug)
+    plan = planner.plan(task.instruction, task.scene, kitchen.last_event.metadata["objects"])
     outcome = {"plan": [c.text() for c in plan.calls], "sources": list(plan.sources),
                "llm_calls": plan.stats.llm_calls, "repair_calls": plan.stats.repair_calls, "plan_seconds": plan.seconds}
     try:
@@ -64,7 +70,7 @@ def run_task(kitchen, planner, task) -> dict:
 
 
 def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[[str], None],
-                 repairs: int | None = None) -> dict:
+                 repairs: int | None = None, ground: bool = False) -> dict:
     """Every task `runs` consecutive times with one planner and one library; each run's outcome. With
     `repairs`, new plans are checked in the kitchen and repaired that many times at most."""
     from cook2ltl.bench.backends import parsers
@@ -81,14 +87,14 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
     backends, language_model = parsers(), load_model(model)
     language_model.complete("", "x", 'root ::= "x"', 1)  # the weights are read outside the timings
     load_seconds = time.perf_counter() - started
-    checked = "" if repairs is None else f", kitchen check and {repairs} repairs"
+    checked = ("" if repairs is None else f", kitchen check and {repairs} repairs") + (", world model" if ground else "")
     echo(f"{model}, {variant.value}{checked}, {runs} runs per task; models loaded in {load_seconds:.1f} s")
     primitives = load_primitives(PRIMITIVES)
     with tempfile.TemporaryDirectory() as folder, KitchenValidator(primitives) as validator:
         library = Library(Path(folder) / "library.sqlite") if variant == Variant.AR_LIBRARY else None
         translator = Translator(primitives, language_model, library, variant,
                                 validator=None if repairs is None else validator, repairs=repairs or 0)
-        planner = Planner(translator, backends.spans, backends.dependencies)
+        planner = Planner(translator, backends.spans, backends.dependencies, ground)
         kitchen = start_embedded("FloorPlan1")
         try:
             for task in tasks:
@@ -101,7 +107,7 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
             kitchen.stop()
             if library is not None:
                 library.close()
-    return {"model": model, "variant": variant.value, "repairs": repairs, "runs": runs,
+    return {"model": model, "variant": variant.value, "repairs": repairs, "ground": ground, "runs": runs,
             "load_seconds": round(load_seconds, 3), "tasks": results}
 
 
@@ -124,8 +130,8 @@ def run_table2(model: str, runs: int, which: str, out: Path, echo: Callable[[str
                         f"choose from {', '.join(COLUMNS)}.")
     tasks = choose_tasks(which)
     record = {"model": model, "runs": runs, "tasks": [t.id for t in tasks], "variants": {}}
-    for name, (variant, repairs) in [(name, COLUMNS[name]) for name in COLUMNS if name in columns]:
-        record["variants"][name] = rollout_runs(model, variant, runs, tasks, echo, repairs)
+    for name, (variant, repairs, ground) in [(name, COLUMNS[name]) for name in COLUMNS if name in columns]:
+        record["variants"][name] = rollout_runs(model, variant, runs, tasks, echo, repairs, ground)
         write(out, "table2", record, table2_markdown(record))
     return record
 
@@ -133,7 +139,8 @@ def run_table2(model: str, runs: int, which: str, out: Path, echo: Callable[[str
 def table2_markdown(record: dict) -> str:
     variants = record["variants"]
     lines = ["| task | AR success | AR s / rollout | AR+𝔸 success | AR+𝔸 s / rollout | AR+𝔸 with repairs: success "
-             "| s / rollout | paper AR: successes · s | paper AR+𝔸: successes · s |", "|---" * 9 + "|"]
+             "| s / rollout | AR+𝔸 in the world model: success | s / rollout | paper AR: successes · s "
+             "| paper AR+𝔸: successes · s |", "|---" * 11 + "|"]
     for task in record["tasks"]:
         cells = []
         for variant in COLUMNS:

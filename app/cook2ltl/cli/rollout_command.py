@@ -43,6 +43,8 @@ def rollout_command(
                                     help="AR passes primitives through; AR+A also reuses and grows the library."),
     validate: bool = typer.Option(True, "--validate/--no-validate", help="AR+A: check a new reduction in a kitchen "
                                   "of its own before it is cached, as `translate` does."),
+    ground: bool = typer.Option(True, "--ground/--no-ground",
+                                help="Check and complete the plan in the world model of the kitchen it runs in."),
     repairs: Optional[int] = typer.Option(None, "--repairs", min=0, max=10, show_default=False,
                                           help="Times a plan the check refuses goes back to the model (default: "
                                                "the settings' [translate] repairs, else 2)."),
@@ -74,8 +76,8 @@ def rollout_command(
         plan = None
         if formula is None:
             with errors.status(f"planning “{task.instruction}” with {model} …"), \
-                    open_planner(model, library, variant, validate, repairs) as planner:
-                plan = planner.plan(task.instruction)
+                    open_planner(model, library, variant, validate, repairs, ground) as planner:
+                plan = planner.plan(task.instruction, scene)
             formula = plan.formula
         console = None if as_json else Console()
         if console is not None:

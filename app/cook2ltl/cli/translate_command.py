@@ -43,6 +43,8 @@ def translate_command(
     approved_only: bool = typer.Option(False, "--approved-only",
                                        help="Reuse only approved library entries (new ones are still cached, pending)."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
+    pddl: Optional[Path] = typer.Option(None, "--pddl", help="Also write the world model's domain, the problem "
+                                        "and the plan as PDDL into this folder."),
 ) -> None:
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
     from cook2ltl import paths
@@ -74,11 +76,26 @@ def translate_command(
             store.close()
         if validator is not None:
             validator.close()
+    if pddl is not None:
+        _export(translation, grounding, pddl, errors)
     if as_json:
         typer.echo(json.dumps(with_validation(translation_json(translation), translation), ensure_ascii=False,
                               indent=2))
     else:
         show(translation, Console())
+
+
+def _export(translation: Translation, grounding, folder: Path, errors: Console) -> None:
+    from cook2ltl.errors import UserError
+    from cook2ltl.world.export import export_pddl
+
+    if grounding is None or translation.world_start is None:
+        raise UserError("--pddl needs the world model.", "drop --no-ground, or use a primitive set with a [world].")
+    results = [r for step in translation.steps for r in step.actions]
+    plan = [call for r in results for call in r.plan]
+    effects = [fact for r in results if r.check is not None for fact in r.check.effect]
+    for path in export_pddl(grounding.world, translation.world_start, plan, effects, folder):
+        errors.print(f"wrote {path}")
 
 
 def _grounding(primitives, ground: bool):

@@ -9,9 +9,9 @@ spaCy, llama.cpp, the SQLite library) once, so a benchmark plans many times.
 from __future__ import annotations
 
 import time
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping, Sequence
 from contextlib import ExitStack, contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..ltl.ast import Formula
@@ -33,6 +33,7 @@ class Plan:
     variant: Variant
     stats: Stats
     seconds: float
+    binding: Mapping[str, str] = field(default_factory=dict)  # the objectId each name stands for (world model)
 
 
 @dataclass(frozen=True)
@@ -40,10 +41,18 @@ class Planner:
     translator: Translator
     spans: SpanExtractor
     dependencies: DependencyParser
+    ground: bool = True  # check and complete every plan in the world model of the kitchen it will run in
 
-    def plan(self, instruction: str) -> Plan:
+    def plan(self, instruction: str, scene: str | None = None, objects: Sequence[Mapping] | None = None) -> Plan:
+        """Plan the instruction for the kitchen `scene`, or the running kitchen whose metadata is `objects`."""
         started = time.perf_counter()
-        events = run(instruction, self.spans, self.dependencies, self.translator)
+        translator = self.translator
+        if self.ground:
+            from ..world.kitchens import grounding
+
+            supply = (lambda: objects) if objects is not None else None
+            translator = replace(translator, grounding=grounding(translator.primitives, scene=scene, objects=supply))
+        events = run(instruction, self.spans, self.dependencies, translator)
         translation = next(e.translation for e in events if isinstance(e, Finished))
         results = [result for step in translation.steps for result in step.actions]
         return Plan(
@@ -56,12 +65,13 @@ class Planner:
             translation.variant,
             translation.stats,
             time.perf_counter() - started,
+            translation.world_binding,
         )
 
 
 @contextmanager
 def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR_LIBRARY, validate: bool = True,
-                 repairs: int = 2) -> Iterator[Planner]:
+                 repairs: int = 2, ground: bool = True) -> Iterator[Planner]:
     """The production planner; the library file (default: the user's) and the kitchen that checks new
     reductions before they are cached (AR+A with `validate`, as `cook2ltl translate`) are closed on exit."""
     from .. import paths
@@ -82,7 +92,7 @@ def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR
             if validate:
                 validator = closing.enter_context(KitchenValidator(primitives))
         translator = Translator(primitives, language_model, store, variant, validator=validator, repairs=repairs)
-        yield Planner(translator, span_extractor(load_settings()), dependency_parser())
+        yield Planner(translator, span_extractor(load_settings()), dependency_parser(), ground)
 
 
 def plan_json(plan: Plan) -> dict:

@@ -111,7 +111,7 @@ Event = Started | ActionRefused | Stepped | Finished
 
 
 def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = frozenset(), limits: Limits = Limits(),
-            cancel: threading.Event | None = None) -> Iterator[Event]:
+            cancel: threading.Event | None = None, binding: Binding = Binding()) -> Iterator[Event]:
     """Execute `formula` in the kitchen's current scene, yielding after every action.
 
     `preferred` are objectIds to choose when a name fits several objects (the
@@ -124,7 +124,7 @@ def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = froz
     actions, predicates = check_formula(formula, metadata["objects"], scene)
     unobservable = tuple(sorted((p for p in predicates if not observable(p)), key=lambda a: a.key))
     yield Started(formula, scene, unobservable)
-    remaining, binding, waits = formula, Binding(), 0
+    remaining, waits = formula, 0
     steps: list[TraceStep] = []
     failures: list[Attempt] = []
     met: frozenset[Atom] = frozenset()

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from ..ltl.ast import Formula
 from .executor import Kitchen
+from .names import Binding
 from .planning import Plan, plan_json
 from .rollout import Event, Finished, Limits, Rollout, Stop, rollout, rollout_json
 from .tasks import GoalCheck, Task, check_goal, goal_json, preferred_objects, set_up, task_json
@@ -47,7 +48,8 @@ def run_trial(kitchen: Kitchen, formula: Formula, scene: str, task: Task | None 
         set_up(kitchen, task)
     preferred = preferred_objects(task, kitchen.last_event.metadata["objects"]) if task else frozenset()
     result = None
-    for event in rollout(kitchen, formula, preferred, limits, cancel):
+    binding = Binding(objects=plan.binding) if plan is not None else Binding()
+    for event in rollout(kitchen, formula, preferred, limits, cancel, binding):
         if isinstance(event, Finished):
             result = event.rollout
         yield event

@@ -1,8 +1,9 @@
 """State-aware decoding: the model writes a plan line by line, each line chosen among those the world allows.
 
 Before every line the grammar admits only the calls that can be applied in the state the lines so far
-reached, from where the recipe had got to (`world.affordances`). The model stops, or is stopped, when the
-action's intended effect holds; what it leaves undone the planner completes (`world.check`).
+reached, from where the recipe had got to (`world.affordances`). Once the action's intended effect holds,
+only lines that keep it are admitted (turning the microwave off, not taking the potato out of the fridge
+again), until the model ends the body; what it leaves undone the planner completes (`world.check`).
 """
 
 from __future__ import annotations
@@ -35,14 +36,18 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Seq
         now = state
         for call in calls:
             now = world.apply(now, call).state
-        if effect and all(reached(now, fact) for fact in effect):
-            return None
-        return [call.text() for call in admissible_calls(world, now, primitives, vocab.objects, vocab.states,
-                                                         vocab.durations)] or None
+        options = admissible_calls(world, now, primitives, vocab.objects, vocab.states, vocab.durations)
+        if effect and _holds(now, effect):
+            options = [call for call in options if _holds(world.apply(now, call).state, effect)]
+        return [call.text() for call in options] or None
 
     completion = model.complete_lines(prompt.static, prompt.dynamic, next_lines, TOKENS_PER_LINE)
     calls, unread = read_body(completion.text)
     return Reduction(action, calls, Source.LLM, completion.usage, unread, prompt.digest)
+
+
+def _holds(state: State, effect: Sequence[Fact]) -> bool:
+    return all(reached(state, fact) for fact in effect)
 
 
 def _looping(calls) -> bool:

@@ -73,7 +73,8 @@ def _primitive_set(raw: dict, path: Path) -> PrimitiveSet:
 
 
 def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
-    """[world]: domain = "x.pddl", kitchen = "k.toml" or "thor", [world.states] word = "predicate"."""
+    """[world]: domain = "x.pddl", kitchen = "k.toml" or "thor", kit = [objects the planner may use],
+    planner = true (false: plans are checked, never completed), [world.states] word = "predicate"."""
     table = raw.get("world")
     if table is None:
         return None
@@ -88,7 +89,13 @@ def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
     if not domain.is_file():
         raise bad(f"the domain file {domain} does not exist.")
     where = None if kitchen == THOR_KITCHENS else path.parent / kitchen
-    return WorldSpec(domain, where, tuple(sorted(states.items())))
+    kit = table.get("kit")
+    if kit is not None and not (isinstance(kit, list) and all(isinstance(k, str) for k in kit)):
+        raise bad("[world] kit must be a list of object names.")
+    planner = table.get("planner", True)
+    if not isinstance(planner, bool):
+        raise bad("[world] planner must be true or false.")
+    return WorldSpec(domain, where, tuple(sorted(states.items())), tuple(kit) if kit is not None else None, planner)
 
 
 def _words(raw: dict, key: str, bad) -> tuple[str, ...]:

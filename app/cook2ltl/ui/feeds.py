@@ -69,15 +69,18 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
     yield WorkProgress("loading the parsing models …")
     spans, dependencies = services.spans(), services.dependencies()
     library = services.library() if variant == Variant.AR_LIBRARY else None
+    from cook2ltl.world.kitchens import grounding
+
+    world = grounding(primitives)  # every plan checked and completed where the recipe has got to
     validator = None
-    if request.validate:
+    if request.validate and (world is None or primitives.world.kitchen is None):  # a kitchen file is its own judge
         missing = unsupported(primitives)  # a lab's set with actions THOR has no stand-in for: as the CLI does
         if missing:
             yield WorkNotice(f"Not checking new reductions: the kitchen has no action for {', '.join(missing)}.")
         else:
             validator = services.validator(primitives)
     translator = Translator(primitives, services.model(request.model, cancel), library, variant, validator=validator,
-                            repairs=request.repairs, approved_only=request.approved_only)
+                            repairs=request.repairs, approved_only=request.approved_only, grounding=world)
     yield WorkProgress("parsing (the span model loads on first use) …")
     total = 0
     for event in run(request.text, spans, dependencies, translator, cancel):
@@ -108,7 +111,7 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
         yield WorkProgress(f"planning “{task.instruction}” with {request.model} …")
         with services.pipeline_lock:
             try:
-                plan = _planner(services, request, cancel).plan(task.instruction)
+                plan = _planner(services, request, cancel).plan(task.instruction, request.scene)
             except GenerationCancelled:
                 plan = None
         if plan is None or cancel.is_set():

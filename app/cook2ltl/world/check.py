@@ -8,8 +8,9 @@ whole plan. Every line keeps who wrote it.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from cook2ltl.reduce.model import Call
 from cook2ltl.world.effects import fact_text
@@ -44,13 +45,21 @@ class PlanCheck:
                 "problems": list(self.problems), "written_by": list(self.written_by)}
 
 
+class Start(NamedTuple):
+    """The kitchen before the first step, and the object each name stands for in a THOR kitchen (the rollout
+    acts on the objects the plans were made for)."""
+
+    state: State
+    binding: Mapping[str, str]
+
+
 @dataclass(frozen=True)
 class Grounding:
     """What checking needs: the world, the planner (None: check only, never complete) and how a run starts."""
 
     world: World
     planner: Planner | None
-    start: Callable[[Iterable[str]], State]  # the kitchen before the first step, given the recipe's names
+    start: Callable[[Iterable[str]], Start]  # given the recipe's names
 
 
 def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequence[Fact], planner: Planner | None,

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Mapping, Sequence
 
 from cook2ltl.reduce.model import PrimitiveSet
-from cook2ltl.world.check import Grounding
-from cook2ltl.world.logic import State
+from cook2ltl.world.check import Grounding, Start
 from cook2ltl.world.planner import FastDownward, Planner
 from cook2ltl.world.pddl import load_domain
 from cook2ltl.world.world import World
@@ -18,27 +17,32 @@ def world_of(primitives: PrimitiveSet) -> World | None:
 
 
 def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: str | None = None,
-              complete: bool = True) -> Grounding | None:
+              complete: bool = True, objects: Callable[[], Sequence[Mapping]] | None = None) -> Grounding | None:
     """The set's world, the planner that completes plans (`complete`) and its start: the kitchen file with the
-    recipe's names as ingredients, or the THOR kitchen `scene` (default: the one with most of the names)."""
+    recipe's names as ingredients, or a THOR kitchen: `objects()` (the metadata of a running kitchen, after a
+    task's setup), else the scene `scene`, else the scene with most of the names."""
     world = world_of(primitives)
     if world is None:
         return None
     spec = primitives.world
+    complete = complete and spec.planner
     if planner is None and complete:
         from cook2ltl.world.recipe_kitchen import read_kitchen
 
-        planner = FastDownward(read_kitchen(spec.kitchen).kit if spec.kitchen is not None else None)
+        kit = spec.kit if spec.kit is not None or spec.kitchen is None else read_kitchen(spec.kitchen).kit
+        planner = FastDownward(kit)
     planner = planner if complete else None
 
-    def start(names: Iterable[str]) -> State:
+    def start(names: Iterable[str]) -> Start:
+        names = tuple(names)
         wanted = tuple(dict.fromkeys((*primitives.objects, *names)))
         if spec.kitchen is not None:
             from cook2ltl.world.recipe_kitchen import kitchen_state
 
-            return kitchen_state(spec.kitchen, wanted)
-        from cook2ltl.world.thor_kitchens import scene_state
+            return Start(kitchen_state(spec.kitchen, wanted), {})
+        from cook2ltl.world.thor_kitchens import best_scene, scene_objects, scene_start
 
-        return scene_state(scene, wanted)
+        metadata = objects() if objects is not None else scene_objects(scene or best_scene(names))
+        return Start(*scene_start(metadata, wanted))
 
     return Grounding(world, planner, start)

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from cook2ltl.errors import UserError
 from cook2ltl.world.logic import Fact, State
+from cook2ltl.world.world import kept_facts
 
 COUNTER = "countertop"
 
@@ -68,12 +69,5 @@ def kitchen_state(path: Path, names: Iterable[str]) -> State:
         place = kitchen.place_of(name)
         if place and place != name:
             facts.add(("in", name, place))
-    return State(objects, frozenset(facts | enclosed_facts(facts)))
+    return State(objects, frozenset(facts | kept_facts(facts)))
 
-
-def enclosed_facts(facts: set[Fact]) -> set[Fact]:
-    """`enclosed` for what is inside a closed container, or inside something inside one (the domain keeps it
-    up to date from there)."""
-    closed = {f[1] for f in facts if f[0] == "openable"} - {f[1] for f in facts if f[0] == "opened"}
-    parent = {f[1]: f[2] for f in facts if f[0] == "in"}
-    return {("enclosed", x) for x, c in parent.items() if c in closed or parent.get(c) in closed}

@@ -3,8 +3,10 @@
 `thor_state(event.metadata["objects"], names, rules)` binds each name of a plan to one THOR object, the
 way a cook would pick among several: a thing not shut away (one in hand first), a container holding
 another named thing (the knife's drawer), the knob of the chosen burner, the faucet nearest the chosen
-sink. Two names never share an object (`sink` is the Sink when `sink_basin` has the basin); a name left
-with no object of its own is left out. The executor runs plans on the same binding:
+sink; a name that is its type's own word comes first (`butter_knife` gets the ButterKnife, `knife` the
+Knife). Two names never share an object, and a name left with none of its own is left out: `sink` when
+`sink_basin` has the basin (the Sink around it would not do: the executor takes a name bound to
+`Sink|…` to stand for `Sink|…|SinkBasin` too). The executor runs plans on the same binding:
 `execute(kitchen, atom, Binding(objects=binding))`.
 
 The state's objects are the bound names, the liquids, and what the rules need besides: every container
@@ -20,6 +22,7 @@ action and every scene loads settled, so what it reports is a state the domain's
 from __future__ import annotations
 
 import math
+from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 
 from cook2ltl.kitchen.facts import PREDICATES
@@ -27,6 +30,7 @@ from cook2ltl.kitchen.names import Binding, Obj, key, known_types, objects_named
 from cook2ltl.kitchen.names import types_for
 from cook2ltl.kitchen.state import TypeRules
 from cook2ltl.world.logic import Fact, State
+from cook2ltl.world.world import kept_facts
 
 # THOR's ability flags → the domain's kind predicates
 FLAGS = {
@@ -53,11 +57,11 @@ def thor_state(objects: Sequence[Mapping], names: Iterable[str], rules: TypeRule
     _add_extras(scene, given, binding)
     liquids = sorted(rules.liquids)
     facts = _facts(scene, binding, liquids, rules)
-    return State((*binding, *liquids), frozenset(facts)), binding
+    return State((*binding, *liquids), frozenset(facts | kept_facts(facts))), binding
 
 
 class _Scene:
-    """The metadata, indexed: each object's direct container, each sink's nearest faucet."""
+    """The metadata, indexed: each object's direct container, each burner's knobs, each sink's faucet."""
 
     def __init__(self, objects: Sequence[Mapping]) -> None:
         self.objects = list(objects)
@@ -65,6 +69,11 @@ class _Scene:
         self.parent = {oid: _direct_parent(o, self.by_id) for oid, o in self.by_id.items()}
         self.shut = shut_away(self.objects)
         self.available = known_types(self.objects)
+        self.words: dict[str, str] | None = None  # object type → the plan's word for it, when needed
+        self.knobs: dict[str, list[str]] = {}  # burner → the knobs that switch it
+        for o in self.objects:
+            for switched in o.get("controlledObjects") or ():
+                self.knobs.setdefault(switched, []).append(o["objectId"])
         faucets = [o for o in self.objects if o["objectType"] == "Faucet"]
         # as the kitchen's settle does: a basin's faucet is the nearest one, first in scene order on a tie
         self.faucet_of = {o["objectId"]: min(faucets, key=lambda f: _distance(f, o))["objectId"]
@@ -104,32 +113,26 @@ def _choose(scene: _Scene, names: list[str], binding: dict[str, str]) -> None:
     and faucets (which prefer serving a named burner or sink); a name that is its type's own word
     (sink_basin) chooses before one standing in for it (sink)."""
 
-    def role(name: str) -> int:
-        types = types_for(name, scene.available)
-        if types and set(types) <= DEPENDENT:
-            return 2
-        return 0 if any(o.get("pickupable") for o in objects_named(name, scene.objects, Binding())) else 1
-
-    def exact(name: str) -> bool:
-        types = types_for(name, scene.available)
-        return bool(types) and key(types[0]) == key(name)
-
-    own = {n: types_for(n, scene.available)[0] for n in names if exact(n)}
-    for name in sorted(names, key=lambda n: (role(n), not exact(n), names.index(n))):
+    types = {n: types_for(n, scene.available) for n in names}
+    unbound = {n: objects_named(n, scene.objects, Binding()) for n in names}
+    role = {n: 2 if types[n] and set(types[n]) <= DEPENDENT else 0 if any(o.get("pickupable") for o in unbound[n])
+            else 1 for n in names}
+    own = {n: types[n][0] for n in names if types[n] and key(types[n][0]) == key(n)}
+    for name in sorted(names, key=lambda n: (role[n], n not in own, names.index(n))):
         taken = set(binding.values())
-        candidates = [o for o in objects_named(name, scene.objects, Binding()) if not _clashes(_whole(o), taken)]
+        candidates = [o for o in unbound[name] if not _clashes(_whole(o), taken)]
         # `knife` takes a Knife, not the ButterKnife that `butter_knife` is the word for, while it can
         others = {t for n, t in own.items() if n != name}
         candidates = [o for o in candidates if o["objectType"] not in others] or candidates
         if not candidates:
             continue  # every object of it belongs to another name
         named = [o["objectId"] for o in scene.objects if _whole(o) in taken]
-        types = types_for(name, scene.available)
-        portable = role(name) == 0
+        holding = Counter(a for n in named for a in scene.ancestors(n))  # container → named things in it
+        portable = role[name] == 0
 
-        def rank(o: Obj) -> tuple:
+        def rank(o: Obj, types: tuple[str, ...] = types[name]) -> tuple:
             oid = o["objectId"]
-            holds = sum(oid in scene.ancestors(n) for n in named)
+            holds = holding[oid]
             shut = oid in scene.shut
             kind = types.index(o["objectType"]) if o["objectType"] in types else len(types)
             return (not o.get("isPickedUp"), not _related(scene, o, named), portable and shut, -holds, shut, kind,
@@ -157,25 +160,28 @@ def _related(scene: _Scene, o: Obj, named: list[str]) -> bool:
 
 def _add_extras(scene: _Scene, given: list[str], binding: dict[str, str]) -> None:
     """Add under made-up names what the rules need of the kitchen beyond the named things."""
-    ids = {o["objectId"] for o in scene.objects if _whole(o) in set(binding.values())}
+    taken = set(binding.values())
     held = [o["objectId"] for o in scene.objects if o.get("isPickedUp")]
-    work = sorted(ids) + held
+    work = sorted(o["objectId"] for o in scene.objects if _whole(o) in taken) + held
     while work:
         oid = work.pop()
-        o = scene.by_id[oid]
-        needed = [*scene.ancestors(oid), scene.faucet_of.get(oid) if o["objectType"] == BASIN else None,
-                  *sorted(k["objectId"] for k in scene.objects if oid in (k.get("controlledObjects") or ())),
-                  oid if oid in held else None]
+        needed = [*scene.ancestors(oid), *sorted(scene.knobs.get(oid, ())), oid if oid in held else None,
+                  scene.faucet_of.get(oid) if scene.by_id[oid]["objectType"] == BASIN else None]
         for extra in needed:
             # one that clashes with a bound object (the Sink above its bound basin) cannot have a name
-            if extra is not None and not _clashes(_whole(scene.by_id[extra]), set(binding.values())):
+            if extra is not None and not _clashes(_whole(scene.by_id[extra]), taken):
                 binding[_made_up_name(scene.by_id[extra], scene, given, binding)] = _whole(scene.by_id[extra])
+                taken.add(_whole(scene.by_id[extra]))
                 work.append(extra)
 
 
 def _made_up_name(o: Obj, scene: _Scene, given: list[str], binding: Mapping[str, str]) -> str:
     """`cabinet_2` for a second cabinet when `cabinet` is a plan's name; `floor` for the floor."""
-    base = next((n for n in given if o["objectType"] in types_for(n, scene.available)), snake_case(o["objectType"]))
+    if scene.words is None:  # each type's word among the plan's names, worked out when first needed
+        scene.words = {}
+        for word in reversed(given):
+            scene.words.update((t, word) for t in types_for(word, scene.available))
+    base = scene.words.get(o["objectType"], snake_case(o["objectType"]))
     if base not in given and base not in binding:
         return base
     n = 2
@@ -184,11 +190,27 @@ def _made_up_name(o: Obj, scene: _Scene, given: list[str], binding: Mapping[str,
     return f"{base}_{n}"
 
 
+def _stands_for(scene: _Scene, binding: Mapping[str, str]) -> dict[str, list[Obj]]:
+    """What each name stands for, as `names.objects_named` has it (the object bound, or an object whose id
+    extends the bound one: its pieces), in one pass over the objects."""
+    named: dict[str, list[str]] = {}
+    for name, oid in binding.items():
+        named.setdefault(oid, []).append(name)
+    found: dict[str, list[Obj]] = {name: [] for name in binding}
+    for o in scene.objects:
+        prefix = o["objectId"]
+        while prefix:
+            for name in named.get(prefix, ()):
+                found[name].append(o)
+            prefix = prefix.rpartition("|")[0]
+    return found
+
+
 def _facts(scene: _Scene, binding: Mapping[str, str], liquids: list[str], rules: TypeRules) -> set[Fact]:
-    facts: set[Fact] = {("liquid", l) for l in liquids}
-    facts |= {("brew", l) for l in liquids if l == BREW} | {("tap-liquid", l) for l in liquids if l == TAP}
-    everyone = Binding(objects=binding)
-    stands_for = {name: objects_named(name, scene.objects, everyone) for name in binding}
+    facts: set[Fact] = {("liquid", liquid) for liquid in liquids}
+    facts |= {("brew", BREW)} & {("brew", liquid) for liquid in liquids}
+    facts |= {("tap-liquid", TAP)} & {("tap-liquid", liquid) for liquid in liquids}
+    stands_for = _stands_for(scene, binding)
     name_of = {_whole(o): name for name, objs in stands_for.items() for o in objs}
     floor = next((o["objectId"] for o in scene.objects if o["objectType"] == FLOOR), None)
     pieces = set(piece_types().values())
@@ -217,12 +239,13 @@ def _facts(scene: _Scene, binding: Mapping[str, str], liquids: list[str], rules:
                 facts.add(("rinses", name_of[scene.faucet_of[o["objectId"]]], name))
     if not any(o.get("isPickedUp") for o in scene.objects):
         facts.add(("hand-empty",))
-    for x, x_type in kind.items():
+    by_type: dict[str, list[str]] = {}
+    for name, object_type in kind.items():
+        by_type.setdefault(object_type, []).append(name)
+    for x_type, xs in by_type.items():
         # the pieces' type fits where pieces fit; pieces cut again stay as they are
         cut = rules.slicing[x_type].into if x_type in rules.slicing else x_type if x_type in pieces else None
-        for r, r_type in kind.items():
-            if rules.fits(x_type, r_type):
-                facts.add(("fits", x, r))
-            if cut is not None and rules.fits(cut, r_type):
-                facts.add(("fits-sliced", x, r))
+        for predicate, of in (("fits", x_type), ("fits-sliced", cut)):
+            for r_type in rules.receptacles.get(of, ()) if of is not None else ():
+                facts |= {(predicate, x, r) for x in xs for r in by_type.get(r_type, ())}
     return facts

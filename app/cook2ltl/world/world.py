@@ -86,3 +86,14 @@ class World:
         from cook2ltl.world.explain import why_not
 
         return why_not(self.domain.schemas[name], call.args, state)
+
+
+def kept_facts(facts: set[Fact] | frozenset[Fact]) -> set[Fact]:
+    """The facts the domains keep up to date instead of asking a negated quantifier, for a kitchen's start:
+    `enclosed` (shut inside a closed container, or inside something inside one) and `carried` (inside the
+    held object, or inside something inside it)."""
+    closed = {f[1] for f in facts if f[0] == "openable"} - {f[1] for f in facts if f[0] == "opened"}
+    held = {f[1] for f in facts if f[0] == "holding"}
+    parent = {f[1]: f[2] for f in facts if f[0] == "in"}
+    kept = {("enclosed", x) for x, c in parent.items() if c in closed or parent.get(c) in closed}
+    return kept | {("carried", x) for x, c in parent.items() if c in held or parent.get(c) in held}
