@@ -38,7 +38,7 @@ def test_our_evaluator_agrees_with_unified_planning_on_random_plans(kitchen):
     from cook2ltl.world.planner import focus
 
     world = kitchen.world
-    start = focus(kitchen.start(["egg", "milk", "butter"]).state, (("in", "egg", "pot"),), kitchen.planner.kit)
+    start = focus(kitchen.start(["egg", "milk", "butter"]).state, (("in", "egg", "pot"),), kitchen.planner.kit["*"])
     problem = build_problem(world.domain.path, start, ())
     actions = {a.name: a for a in problem.actions}
     objects = {o.name: o for o in problem.all_objects}

@@ -121,7 +121,7 @@ def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = froz
     started = time.perf_counter()
     metadata = kitchen.last_event.metadata
     scene = metadata["sceneName"].removesuffix("_physics")
-    actions, predicates = check_formula(formula, metadata["objects"], scene)
+    actions, predicates = check_formula(formula, metadata["objects"], scene, frozenset(binding.objects))
     unobservable = tuple(sorted((p for p in predicates if not observable(p)), key=lambda a: a.key))
     yield Started(formula, scene, unobservable)
     remaining, waits = formula, 0
@@ -183,8 +183,10 @@ def held_atoms(formula: Formula) -> frozenset[Atom]:
     return frozenset().union(*(n.left.atoms for n in postorder(formula) if isinstance(n, (Until, WeakUntil))))
 
 
-def check_formula(formula: Formula, objects, scene: str) -> tuple[tuple[Atom, ...], frozenset[Atom]]:
-    """(the action atoms in the order they appear, the predicate atoms); UserError for what cannot run."""
+def check_formula(formula: Formula, objects, scene: str, bound: frozenset[str] = frozenset()
+                  ) -> tuple[tuple[Atom, ...], frozenset[Atom]]:
+    """(the action atoms in the order they appear, the predicate atoms); UserError for what cannot run.
+    `bound` names stand for objects already chosen (the world model's `drawer_2`)."""
     actions = tuple(a for a in in_order(formula) if a.name in PRIMITIVES)
     for atom in actions:
         want = ARITY[atom.name]
@@ -196,7 +198,7 @@ def check_formula(formula: Formula, objects, scene: str) -> tuple[tuple[Atom, ..
             raise UnknownObject(f"No liquid {atom.args[1]!r} in {scene}.",
                                 f"THOR fills with {', '.join(sorted(liquids()))}.")
     names = [arg for a in actions for arg in (a.args[:1] if a.name == "fill" else a.args)]
-    check_names(names, objects, scene)
+    check_names([name for name in names if name not in bound], objects, scene)
     return actions, formula.atoms - frozenset(actions)
 
 

@@ -2,8 +2,9 @@
 
 Before every line the grammar admits only the calls that can be applied in the state the lines so far
 reached, from where the recipe had got to (`world.affordances`). Once the action's intended effect holds,
-only lines that keep it are admitted (turning the microwave off, not taking the potato out of the fridge
-again), until the model ends the body; what it leaves undone the planner completes (`world.check`).
+only lines that tidy up and keep it are admitted (turning the microwave off, closing the fridge; not taking
+the apple out again), until the model ends the body or there are none; what it leaves undone the planner
+completes (`world.check`).
 """
 
 from __future__ import annotations
@@ -37,13 +38,20 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Seq
         for call in calls:
             now = world.apply(now, call).state
         options = admissible_calls(world, now, primitives, vocab.objects, vocab.states, vocab.durations)
-        if effect and _holds(now, effect):
-            options = [call for call in options if _holds(world.apply(now, call).state, effect)]
+        if effect and _holds(now, effect):  # only tidying up now: lines that undo a change, keeping the effect
+            changed = len(now.facts ^ state.facts)
+            options = [call for call in options if _tidies(world.apply(now, call).state, state, changed, effect)]
         return [call.text() for call in options] or None
 
     completion = model.complete_lines(prompt.static, prompt.dynamic, next_lines, TOKENS_PER_LINE)
     calls, unread = read_body(completion.text)
     return Reduction(action, calls, Source.LLM, completion.usage, unread, prompt.digest)
+
+
+def _tidies(after: State, start: State, changed: int, effect: Sequence[Fact]) -> bool:
+    """Whether a line brings the kitchen back towards where the action found it (turns off what the plan turned
+    on, closes what it opened) and keeps the effect."""
+    return len(after.facts ^ start.facts) < changed and _holds(after, effect)
 
 
 def _holds(state: State, effect: Sequence[Fact]) -> bool:

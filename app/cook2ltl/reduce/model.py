@@ -30,7 +30,8 @@ class WorldSpec:
     domain: Path
     kitchen: Path | None  # None: the AI2-THOR kitchens
     states: tuple[tuple[str, str], ...]  # (word, predicate): hashable, as the set is
-    kit: tuple[str, ...] | None = None  # what the planner may use besides a goal's objects (None: everything)
+    # what the planner may use besides a goal's objects, by goal predicate ("*": always); None: everything
+    kit: tuple[tuple[str, tuple[str, ...]], ...] | None = None
     planner: bool = True  # whether a planner completes plans in this world (False: they are checked only)
 
 

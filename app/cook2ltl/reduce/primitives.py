@@ -90,12 +90,14 @@ def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
         raise bad(f"the domain file {domain} does not exist.")
     where = None if kitchen == THOR_KITCHENS else path.parent / kitchen
     kit = table.get("kit")
-    if kit is not None and not (isinstance(kit, list) and all(isinstance(k, str) for k in kit)):
-        raise bad("[world] kit must be a list of object names.")
+    kit = {"*": kit} if isinstance(kit, list) else kit
+    if kit is not None and not (isinstance(kit, dict) and all(
+            isinstance(v, list) and all(isinstance(k, str) for k in v) for v in kit.values())):
+        raise bad("[world] kit must be a list of object names, or a table of them by goal predicate.")
     planner = table.get("planner", True)
     if not isinstance(planner, bool):
         raise bad("[world] planner must be true or false.")
-    return WorldSpec(domain, where, tuple(sorted(states.items())), tuple(kit) if kit is not None else None, planner)
+    return WorldSpec(domain, where, tuple(sorted(states.items())), tuple((p, tuple(v)) for p, v in kit.items()) if kit is not None else None, planner)
 
 
 def _words(raw: dict, key: str, bad) -> tuple[str, ...]:

@@ -6,7 +6,9 @@ up"; `put(egg, pot)`: "not holding egg". Predicates without a phrase are shown a
 
 from __future__ import annotations
 
-from cook2ltl.world.logic import And, Atom, Condition, Env, Exists, Not, Or, Schema, State, bindings, ground, holds
+from cook2ltl.world.logic import (
+    And, Atom, Condition, Env, Exists, Not, Or, Schema, State, bindings, ground, holds, positive_facts,
+)
 
 # predicate → (phrase when it is needed but false, phrase when it must be false but holds)
 PHRASES = {
@@ -25,6 +27,10 @@ PHRASES = {
     "liquid": ("{0} is not a liquid", "{0} is a liquid"),
     "sliced": ("{0} is not cut", "{0} is already cut"),
     "sliceable": ("{0} cannot be cut", ""),
+    "enclosed": ("", "{0} is shut inside something closed; open it first"),
+    "carried": ("", "{0} is inside what is in hand; put that down first"),
+    "vessel": ("nothing can be poured into {0}", ""),
+    "fits": ("{0} does not fit in or on {1}", ""),
 }
 
 
@@ -55,7 +61,7 @@ def _phrase(condition: Condition, state: State, env: Env) -> str:
         inner = condition.arg
         for binding in bindings(inner.variables, inner.body, state, env):
             if holds(inner.body, state, binding):
-                facts = [ground(a, binding) for a in _atoms(inner.body) if ground(a, binding) in state.facts]
+                facts = [ground(a, binding) for a in positive_facts(inner.body) if ground(a, binding) in state.facts]
                 closed = next((f[1] for f in facts if f[0] in ("openable",)), None)
                 if closed is not None:
                     return f"{env[next(iter(env))] if env else 'it'} is shut inside the closed {closed}; open it first"
@@ -75,14 +81,6 @@ def _atom_phrase(fact: tuple[str, ...], needed: bool) -> str:
         return text.format(*fact[1:])
     call = f"{fact[0]}({', '.join(fact[1:])})" if len(fact) > 1 else fact[0]
     return f"{call} {'is false' if needed else 'holds'}"
-
-
-def _atoms(condition: Condition) -> list[Atom]:
-    if isinstance(condition, Atom):
-        return [condition]
-    if isinstance(condition, And):
-        return [a for part in condition.args for a in _atoms(part)]
-    return []
 
 
 def _pddl(condition: Condition, env: Env) -> str:

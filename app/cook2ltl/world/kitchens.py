@@ -29,7 +29,7 @@ def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: s
     if planner is None and complete:
         from cook2ltl.world.recipe_kitchen import read_kitchen
 
-        kit = spec.kit if spec.kit is not None or spec.kitchen is None else read_kitchen(spec.kitchen).kit
+        kit = dict(spec.kit) if spec.kit is not None or spec.kitchen is None else read_kitchen(spec.kitchen).kit
         planner = FastDownward(kit)
     planner = planner if complete else None
 

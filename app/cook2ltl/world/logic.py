@@ -138,14 +138,15 @@ def holds(condition: Condition, state: State, env: Env) -> bool:
 def bindings(variables: tuple[str, ...], condition: Condition, state: State, env: Env) -> Iterator[dict[str, str]]:
     """Values of `variables` (extending `env`) that may satisfy `condition`: every binding that does is
     among them. Positive facts of a conjunction narrow the search; the rest range over all objects."""
-    yield from _join(list(variables), _positive_facts(condition), state, dict(env))
+    yield from _join(list(variables), positive_facts(condition), state, dict(env))
 
 
-def _positive_facts(condition: Condition) -> list[Atom]:
+def positive_facts(condition: Condition) -> list[Atom]:
+    """The atoms a condition asserts outright: itself, or those of a conjunction, however nested."""
     if isinstance(condition, Atom):
         return [condition]
     if isinstance(condition, And):
-        return [a for arg in condition.args for a in _positive_facts(arg)]
+        return [a for arg in condition.args for a in positive_facts(arg)]
     return []
 
 

@@ -9,7 +9,7 @@ that the goal asks for (else any it brings about), as `wait(pasta == cooked)`.
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from functools import cache
 from pathlib import Path
 from typing import Protocol
@@ -38,16 +38,21 @@ class FastDownward:
     `kit` (a kitchen's everyday pot, knife, stovetop …; None: every object). Grounding every pair of a
     fifty-object kitchen costs Fast Downward minutes, this few seconds."""
 
-    def __init__(self, kit: Iterable[str] | None = None, time_limit: float = TIME_LIMIT) -> None:
-        self.kit = None if kit is None else frozenset(kit)
+    def __init__(self, kit: Iterable[str] | Mapping[str, Iterable[str]] | None = None,
+                 time_limit: float = TIME_LIMIT) -> None:
+        # a list is used for every goal; a table by goal predicate ("*": every goal) gives what each state needs
+        table = {"*": kit} if kit is not None and not isinstance(kit, Mapping) else (kit or {})
+        self.kit = None if kit is None else {predicate: frozenset(names) for predicate, names in table.items()}
         self.time_limit = time_limit
         self._lock = threading.Lock()
 
     def plan(self, world: World, state: State, goal: Sequence[Fact]) -> tuple[Call, ...] | None:
         if all(reached(state, fact) for fact in goal):
             return ()
+        kit = None if self.kit is None else frozenset().union(
+            self.kit.get("*", ()), *(self.kit.get(fact[0], ()) for fact in goal))
         with self._lock:
-            actions = _solve(world.domain.path, focus(state, goal, self.kit), tuple(goal), self.time_limit)
+            actions = _solve(world.domain.path, focus(state, goal, kit), tuple(goal), self.time_limit)
         return None if actions is None else as_calls(world, state, goal, actions)
 
 
