@@ -13,6 +13,7 @@
     [translate]                                # the app's Translate screen
     primitives = ["~/robot/primitives.toml"]   # your robots' primitive sets, offered beside recipe and ai2thor
     repairs = 2                                # times a plan the kitchen refuses goes back to the model
+    ground = true                              # plans decoded, checked and completed in the world model
     [keymap]                                   # the app's keys: binding id = keys (a wrong id is named)
     "translate.run" = "ctrl+enter"
     "library.approve" = "y,a"
@@ -49,6 +50,7 @@ class Limits:
 class TranslateSettings:
     primitives: tuple[Path, ...] = ()  # TOML primitive sets beside the built-in ones
     repairs: int = 2
+    ground: bool = True  # check and complete every plan in the primitive set's world model
 
 
 @dataclass(frozen=True)
@@ -97,7 +99,11 @@ def _translate(raw: dict, path: Path) -> TranslateSettings:
     if isinstance(repairs, bool) or not isinstance(repairs, int) or not 0 <= repairs <= 10:
         raise UserError(f"{path}: [translate] repairs = {repairs!r} is not a whole number from 0 to 10.",
                         f"the default is {TranslateSettings.repairs}.")
-    return TranslateSettings(tuple(Path(item).expanduser() for item in primitives), repairs)
+    ground = raw.get("ground", TranslateSettings.ground)
+    if not isinstance(ground, bool):
+        raise UserError(f"{path}: [translate] ground = {ground!r} is not true or false.",
+                        "true checks and completes every plan in the world model (the default).")
+    return TranslateSettings(tuple(Path(item).expanduser() for item in primitives), repairs, ground)
 
 
 def _keymap(raw: dict, path: Path) -> dict[str, str]:

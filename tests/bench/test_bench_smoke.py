@@ -36,7 +36,7 @@ def test_bench_smoke_writes_every_result(tmp_path):
     assert rows["AR+A"]["validated_rate"] is not None and 0 <= rows["AR+A"]["validated_rate"] <= 1
 
     table2 = results["table2"]["variants"]
-    assert set(table2) == {"AR", "AR+A", "AR+A repair"}
+    assert set(table2) == {"AR", "AR+A", "AR+A repair", "AR+A world"}
     for variant in table2.values():
         [(task, runs)] = variant["tasks"].items()
         assert task == "microwave-potato" and len(runs) == 1 and isinstance(runs[0]["success"], bool)

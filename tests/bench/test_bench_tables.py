@@ -157,7 +157,7 @@ def test_table2_side_by_side():
         "AR": {"runs": 2, "tasks": {"cut-bread": [dict(run, success=True), dict(run, success=False)]}},
         "AR+A": {"runs": 2, "tasks": {"cut-bread": [dict(run, success=True), dict(run, success=True)]}}}}
     table = table2_markdown(record).splitlines()
-    assert table[2] == "| cut-bread | 1/2 | 1.50 ± 0.00 | 2/2 | 1.50 ± 0.00 | — | — | 9/10 · 12.85 | 8/10 · 1.12 |"
+    assert table[2] == "| cut-bread | 1/2 | 1.50 ± 0.00 | 2/2 | 1.50 ± 0.00 | — | — | — | — | 9/10 · 12.85 | 8/10 · 1.12 |"
     assert "- AR, all tasks: success 1/2 (50 %); seconds per rollout 1.50 (first run 1.50, later runs 1.50)" in table
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
+from cook2ltl.settings import TranslateSettings
 from cook2ltl.ui.app import Cook2LTLApp
 from cook2ltl.ui.services import Services
 from tests.fakes import ScriptedDependencies, ScriptedSpans
@@ -87,6 +87,8 @@ def services(sandbox, model) -> Services:
 @pytest.fixture
 def make_app(services):
     def make(text: str = RECIPE, **kwargs) -> Cook2LTLApp:
+        # the app's wiring of the kitchen check, repairs and cancelling, as without the world model
+        kwargs.setdefault("translate", TranslateSettings(ground=False))
         return Cook2LTLApp(services, text, **kwargs)
 
     return make

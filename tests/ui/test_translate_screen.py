@@ -237,10 +237,13 @@ async def test_a_labs_primitive_set_and_repairs_come_from_the_settings(make_app,
     recipe_set = (paths.assets_dir() / "primitives" / "recipe.toml").read_text()
     examples = paths.assets_dir() / "prompts" / "recipe.txt"
     robot = tmp_path / "boiling-robot.toml"  # a robot that boils by itself
+    assets = paths.assets_dir()
     robot.write_text(recipe_set.replace('"../prompts/recipe.txt"', f'"{examples}"')
-                     .replace('name = "recipe"', 'name = "boiling-robot"') + 'boil = ["what"]\n')
+                     .replace('"../domains/', f'"{assets}/domains/').replace('"../kitchens/', f'"{assets}/kitchens/')
+                     .replace('name = "recipe"', 'name = "boiling-robot"')
+                     .replace("[primitives]\n", '[primitives]\nboil = ["what"]\n'))
     model.answers["boil"] = BOIL_UNHELD  # refused by the kitchen, and never repaired: repairs = 0
-    app, posted = make_app(translate=TranslateSettings((robot,), repairs=0)), []
+    app, posted = make_app(translate=TranslateSettings((robot,), repairs=0, ground=False)), []
     async with app.run_test(size=SIZE, message_hook=posted.append) as pilot:
         await pilot.press("ctrl+r")
         await settle(pilot)

@@ -34,6 +34,7 @@ class TranslateRequest:
     validate: bool = True  # run new reductions in the kitchen before caching them (repairing failures)
     approved_only: bool = False  # lab mode: reuse approved library entries only
     repairs: int = TranslateSettings.repairs  # times a plan the kitchen refuses goes back to the model
+    ground: bool = TranslateSettings.ground  # plans decoded, checked and completed in the world model
 
 
 @dataclass(frozen=True)
@@ -71,7 +72,7 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
     library = services.library() if variant == Variant.AR_LIBRARY else None
     from cook2ltl.world.kitchens import grounding
 
-    world = grounding(primitives)  # every plan checked and completed where the recipe has got to
+    world = grounding(primitives) if request.ground else None  # plans checked where the recipe has got to
     validator = None
     if request.validate and (world is None or primitives.world.kitchen is None):  # a kitchen file is its own judge
         missing = unsupported(primitives)  # a lab's set with actions THOR has no stand-in for: as the CLI does
