@@ -21,3 +21,15 @@ def _no_network_attempts():
     offline.blocked_hosts.clear()
     yield
     assert not offline.blocked_hosts, f"network connections attempted: {', '.join(offline.blocked_hosts)}"
+
+
+@pytest.fixture(scope="module")
+def thor_home(tmp_path_factory):
+    """HOME, the kitchen's script cache and THOR settings confined to a temp dir for a whole module."""
+    home = tmp_path_factory.mktemp("home")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("HOME", str(home))
+        mp.setenv("COOK2LTL_KITCHEN_CACHE", str(home / "cache"))
+        mp.delenv("COOK2LTL_THOR_EXECUTABLE", raising=False)
+        mp.delenv("COOK2LTL_THOR_PLATFORM", raising=False)
+        yield home

@@ -279,13 +279,14 @@ class _Run:
             stale = entry.id if entry else None  # written for another version of the primitive set
         in_world = (self.t.grounding is not None and hasattr(self.t.model, "complete_lines")
                     and not self.t.settings.comments)  # the line grammar has no comment lines
+        effect = self._effect(action)
         if in_world:
-            checked = self._reduce_in_world(action)
+            checked = self._reduce_in_world(action, effect)
         else:
             checked = reduce_checked(action, primitives, self.verbs, self.t.model, self.t.settings, self._expand,
                                      self.t.validator, self.t.repairs)
         reduction, plan, validation = checked.reduction, checked.plan, checked.validation
-        grounded = self._ground(action, plan, "model")
+        grounded = self._ground(action, plan, "model", effect)
         if grounded is not None:
             self._count(model_lines_applied=int(bool(plan) and grounded.applicable))
             changed = grounded.plan != plan  # lines dropped or completed: the checked plan is what is learnt
@@ -302,15 +303,12 @@ class _Run:
         result = ActionResult(frame_index, reduction, plan, validation, checked.failed, check=grounded)
         return result, plan_element(plan, primitives) if plan else None
 
-    def _reduce_in_world(self, action: Action) -> Checked:
+    def _reduce_in_world(self, action: Action, effect: tuple) -> Checked:
         """State-aware decoding: every line the model writes can be applied where the recipe has got to."""
         from cook2ltl.reduce.grounded import reduce_in_world
-        from cook2ltl.world.effects import intended_effect
 
-        world = self.t.grounding.world
-        effect = intended_effect(action, world, self.world_state) or ()
         reduction = reduce_in_world(action, self.t.primitives, [v.verb for v in self.verbs], self.t.model,
-                                    self.t.settings, world, self.world_state, effect)
+                                    self.t.settings, self.t.grounding.world, self.world_state, effect)
         return Checked(reduction, reduction.body, None)
 
     def start(self, parsed: ParsedRecipe) -> None:
@@ -322,14 +320,21 @@ class _Run:
             self.world_state = self.world_start = start.state
             self.world_binding = dict(start.binding)
 
-    def _ground(self, action: Action, plan: tuple[Call, ...], origin: str) -> PlanCheck | None:
+    def _effect(self, action: Action) -> tuple:
+        """The states `action` must leave, in the world where the recipe has got to (none without a world)."""
+        if self.t.grounding is None:
+            return ()
+        from cook2ltl.world.effects import intended_effect
+
+        return intended_effect(action, self.t.grounding.world, self.world_state) or ()
+
+    def _ground(self, action: Action, plan: tuple[Call, ...], origin: str, effect: tuple | None = None
+                ) -> PlanCheck | None:
         """The plan checked where the recipe has got to, completed to the action's effect; the run moves on."""
         grounding = self.t.grounding
         if grounding is None:
             return None
-        from cook2ltl.world.effects import intended_effect
-
-        effect = intended_effect(action, grounding.world, self.world_state) or ()
+        effect = self._effect(action) if effect is None else effect
         checked = check_plan(grounding.world, self.world_state, plan, effect, grounding.planner, origin)
         self.world_state = checked.state
         self._count(grounded=1, reached=int(checked.effect_reached), planner_lines=checked.planner_lines)

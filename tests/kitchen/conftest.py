@@ -61,15 +61,3 @@ def bench() -> Bench:
 def bench_in():
     """A bench for another scene: bench_in("FloorPlan2")."""
     return Bench
-
-
-@pytest.fixture(scope="module")
-def thor_home(tmp_path_factory):
-    """HOME, the kitchen's script cache and THOR settings confined to a temp dir for a whole module."""
-    home = tmp_path_factory.mktemp("home")
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setenv("HOME", str(home))
-        mp.setenv("COOK2LTL_KITCHEN_CACHE", str(home / "cache"))
-        mp.delenv("COOK2LTL_THOR_EXECUTABLE", raising=False)
-        mp.delenv("COOK2LTL_THOR_PLATFORM", raising=False)
-        yield home

@@ -9,17 +9,6 @@ pytest.importorskip("ai2thor")
 
 
 @pytest.fixture(scope="module")
-def thor_home(tmp_path_factory):
-    home = tmp_path_factory.mktemp("home")
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setenv("HOME", str(home))
-        mp.setenv("COOK2LTL_KITCHEN_CACHE", str(home / "cache"))
-        mp.delenv("COOK2LTL_THOR_EXECUTABLE", raising=False)
-        mp.delenv("COOK2LTL_THOR_PLATFORM", raising=False)
-        yield home
-
-
-@pytest.fixture(scope="module")
 def controller(thor_home):
     from cook2ltl.kitchen.launcher import start_embedded
 

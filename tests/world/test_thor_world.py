@@ -24,7 +24,7 @@ pytest.importorskip("unified_planning")
 pytest.importorskip("ai2thor")
 
 from cook2ltl.kitchen.executor import execute  # noqa: E402
-from cook2ltl.kitchen.launcher import THOR_EXECUTABLE_ENV, THOR_PLATFORM_ENV, start_embedded  # noqa: E402
+from cook2ltl.kitchen.launcher import start_embedded  # noqa: E402
 from cook2ltl.kitchen.names import Binding, UnknownObject, objects_named  # noqa: E402
 from cook2ltl.kitchen.scenes import load_scene, load_type_rules  # noqa: E402
 from cook2ltl.kitchen.metadata import objects_metadata  # noqa: E402
@@ -70,24 +70,12 @@ ALLOWED = {
 
 
 @pytest.fixture(scope="module")
-def sandbox(tmp_path_factory):
-    """HOME and the kitchen's script cache confined to a temp dir for the module (as tests/kitchen does)."""
-    home = tmp_path_factory.mktemp("home")
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setenv("HOME", str(home))
-        mp.setenv("COOK2LTL_KITCHEN_CACHE", str(home / "cache"))
-        mp.delenv(THOR_EXECUTABLE_ENV, raising=False)
-        mp.delenv(THOR_PLATFORM_ENV, raising=False)
-        yield home
-
-
-@pytest.fixture(scope="module")
-def domain(sandbox):
+def domain(thor_home):
     return load_domain(DOMAIN)
 
 
 @pytest.fixture(scope="module")
-def kitchen(sandbox):
+def kitchen(thor_home):
     controller = start_embedded("FloorPlan1")
     yield controller
     controller.stop()

@@ -30,13 +30,20 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Seq
     vocab = vocabulary(primitives, (), action)
     prompt = build_prompt(primitives, library_verbs, action, comments=False)
 
+    applied: list = []  # the lines applied so far, and the state they reached: each line is applied once
+    now = state
+
     def next_lines(text: str) -> list[str] | None:
+        nonlocal now
         calls, _ = read_body(text)
         if len(calls) >= settings.max_lines or _looping(calls):
             return None
-        now = state
-        for call in calls:
+        if calls[:len(applied)] != applied:  # the text was not just extended: start from the action's state
+            applied.clear()
+            now = state
+        for call in calls[len(applied):]:
             now = world.apply(now, call).state
+            applied.append(call)
         options = admissible_calls(world, now, primitives, vocab.objects, vocab.states, vocab.durations)
         if effect and _holds(now, effect):  # only tidying up now: lines that undo a change, keeping the effect
             changed = len(now.facts ^ state.facts)

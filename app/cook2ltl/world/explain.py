@@ -7,7 +7,7 @@ up"; `put(egg, pot)`: "not holding egg". Predicates without a phrase are shown a
 from __future__ import annotations
 
 from cook2ltl.world.logic import (
-    And, Atom, Condition, Env, Exists, Not, Or, Schema, State, bindings, ground, holds, positive_facts,
+    And, Atom, Condition, Env, Exists, Not, Or, Schema, State, ground, holds,
 )
 
 # predicate → (phrase when it is needed but false, phrase when it must be false but holds)
@@ -57,15 +57,6 @@ def _phrase(condition: Condition, state: State, env: Env) -> str:
         return _phrase(condition.args[0], state, env)
     if isinstance(condition, Not) and isinstance(condition.arg, Atom):
         return _atom_phrase(ground(condition.arg, env), False)
-    if isinstance(condition, Not) and isinstance(condition.arg, Exists):
-        inner = condition.arg
-        for binding in bindings(inner.variables, inner.body, state, env):
-            if holds(inner.body, state, binding):
-                facts = [ground(a, binding) for a in positive_facts(inner.body) if ground(a, binding) in state.facts]
-                closed = next((f[1] for f in facts if f[0] in ("openable",)), None)
-                if closed is not None:
-                    return f"{env[next(iter(env))] if env else 'it'} is shut inside the closed {closed}; open it first"
-                return "; ".join(_atom_phrase(f, False) for f in facts if f[0] == "in") or "it is in the way"
     if isinstance(condition, Exists) and isinstance(condition.body, And):
         wanted = [a for a in condition.body.args if isinstance(a, Atom)]
         if any(a.predicate == "holding" for a in wanted):
