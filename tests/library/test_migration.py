@@ -41,7 +41,7 @@ def test_a_version_1_library_migrates_in_place_with_every_entry_kept(tmp_path):
         (1, V1_ROWS[0]["body"], "qwen", V1_ROWS[0]["created"], "learnt")]
     library.close()
     conn = sqlite3.connect(tmp_path / "old.sqlite")
-    assert conn.execute("PRAGMA user_version").fetchone()[0] == SCHEMA_VERSION == 3
+    assert conn.execute("PRAGMA user_version").fetchone()[0] == SCHEMA_VERSION == 4
     conn.close()
 
 

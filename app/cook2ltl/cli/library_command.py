@@ -2,7 +2,7 @@
 
 list, show, approve, reject, edit, history, undo, export, import. Every change records who made it (`--by`,
 default $COOK2LTL_USER or the login name) and when; an edited body is checked against the primitive set and
-run in the embedded kitchen before it is stored.
+run in the embedded kitchen before it is stored, an edited intended effect is checked atom by atom.
 """
 
 from __future__ import annotations
@@ -71,7 +71,8 @@ def list_command(library: Optional[Path] = LibraryOption,
 
 @library_app.command("show")
 def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
-    """One entry: body, status and reviewer, kitchen check and its problems, provenance, version."""
+    """One entry: body, status and reviewer, kitchen check and its problems, intended effect, provenance, version."""
+    from cook2ltl.library.effect import shown_effect
     from cook2ltl.library.store import shown_body
 
     entry = _open(library).get(entry_id)
@@ -82,6 +83,7 @@ def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None
     console.print(f"version {entry.version} · kitchen check [{CHECK_STYLE[entry.validation]}]{entry.validation}[/]")
     for problem in entry.problems:
         console.print(f"  [red]✗[/red] {escape(problem)}")
+    console.print(f"effect: {escape(shown_effect(entry.effect))}")
     console.print()
     console.print(escape(shown_body(entry.body)))
     console.print()
@@ -113,10 +115,15 @@ def _set(entry_id: int, status: str, library: Path | None, by: str | None, force
 
 @library_app.command("edit")
 def edit_command(entry_id: int,
-                 body_file: str = typer.Option(..., "--body-file", help="The new body, one call per line; - reads "
-                                                                        "it from standard input."),
+                 body_file: Optional[str] = typer.Option(None, "--body-file", help="The new body, one call per line; "
+                                                         "- reads it from standard input (default: keep the body)."),
+                 effect: Optional[list[str]] = typer.Option(
+                     None, "--effect", help="An atom of the intended effect, such as boiled(what) or in(what, pot); "
+                                            "repeat it for each atom; none: nothing to reach (default: keep it)."),
+                 clear_effect: bool = typer.Option(False, "--clear-effect",
+                                                   help="Forget the intended effect: not recorded."),
                  library: Optional[Path] = LibraryOption, by: Optional[str] = ByOption,
-                 note: str = typer.Option("", help="Why the body changed, kept in the history."),
+                 note: str = typer.Option("", help="Why the entry changed, kept in the history."),
                  keep_failing: bool = typer.Option(False, "--keep-failing",
                                                    help="Save the body even if it fails the kitchen check."),
                  validate: bool = typer.Option(True, "--validate/--no-validate",
@@ -124,16 +131,24 @@ def edit_command(entry_id: int,
                  primitives: Optional[str] = typer.Option(
                      None, help="The primitive set file of an entry in a lab's own set (built-ins load by name)."),
                  ) -> None:
-    """Replace an entry's body: checked line by line, run in the kitchen, then stored as a new version, pending."""
+    """Replace an entry's body (checked line by line, run in the kitchen) or its intended effect (checked atom by
+    atom), or both: stored as a new version, pending. A new effect alone keeps the body's kitchen check."""
     from cook2ltl.library.body_check import body_problems
+    from cook2ltl.library.effect import KEEP
     from cook2ltl.library.recheck import Recheck, live_verbs
 
     store = _open(library)
     entry = store.get(entry_id)
-    body = _read_body(body_file)
+    new_effect = _effect_option(effect, clear_effect, body_file is None)
+    body = entry.body if body_file is None else _read_body(body_file)
     console, errors = Console(highlight=False), Console(stderr=True, highlight=False)
+    if new_effect == entry.effect:
+        new_effect = KEEP
+    if body == entry.body and new_effect is KEEP:
+        console.print(f"entry {entry_id}: the body and the effect are unchanged; nothing saved")
+        return
     if body == entry.body:
-        console.print(f"entry {entry_id}: the body is unchanged; nothing saved")
+        _save(store, entry, body, by, Recheck(entry.validation, entry.problems), note, new_effect, console)
         return
     primitive_set = _primitive_set(primitives or entry.primitives, entry.primitives)
     verbs = live_verbs(store, entry.primitives)
@@ -150,9 +165,32 @@ def edit_command(entry_id: int,
         errors.print("[bold red]the body fails the kitchen check[/bold red]; nothing saved "
                      "(--keep-failing saves it anyway)")
         raise typer.Exit(1)
-    edited = store.edit(entry_id, body, _by(by), checked.validation, checked.problems, note)
-    console.print(f"entry {entry_id} {escape(edited.action)}: version {edited.version}, kitchen check "
-                  f"[{CHECK_STYLE[edited.validation]}]{edited.validation}[/], {_status('pending')} review")
+    _save(store, entry, body, by, checked, note, new_effect, console)
+
+
+def _save(store, entry, body: str, by: str | None, checked, note: str, effect, console: Console) -> None:
+    from cook2ltl.library.effect import shown_effect
+
+    edited = store.edit(entry.id, body, _by(by), checked.validation, checked.problems, note, effect)
+    console.print(f"entry {entry.id} {escape(edited.action)}: version {edited.version}, kitchen check "
+                  f"[{CHECK_STYLE[edited.validation]}]{edited.validation}[/], effect "
+                  f"{escape(shown_effect(edited.effect))}, {_status('pending')} review")
+
+
+def _effect_option(atoms: list[str] | None, clear: bool, no_body: bool):
+    """The edit's effect: KEEP, None (--clear-effect), () (--effect none) or the atoms, checked."""
+    from cook2ltl.errors import UserError
+    from cook2ltl.library.effect import KEEP, checked_effect
+
+    if atoms and clear:
+        raise UserError("--effect and --clear-effect contradict each other.", "give one of them.")
+    if not atoms and not clear and no_body:
+        raise UserError("Nothing to edit.", "give --body-file FILE, --effect ATOM or --clear-effect.")
+    if clear:
+        return None
+    if not atoms:
+        return KEEP
+    return () if atoms == ["none"] else checked_effect(atoms, "--effect")
 
 
 def _read_body(body_file: str) -> str:

@@ -1,20 +1,22 @@
 """A library as a JSON file, to move reviewed actions between labs and robots, every version included.
 
-    {"schema_version": 2, "exported": "2026-…", "entries": [{"primitives": "recipe", "verb": "boil",
+    {"schema_version": 4, "exported": "2026-…", "entries": [{"primitives": "recipe", "verb": "boil",
      "signature": ["what"], "body": "…", "status": "approved", "model": "…", "prompt_hash": "…",
      "created": "…", "validation": "passed", "problems": [], "reviewed_by": "ann", "reviewed_at": "…",
-     "example": {"$what": "egg"}, "history": [{"version": 1, "body": "…", "validation": "passed",
-     "problems": [], "author": "…", "at": "…", "note": "learnt", "restores": null}, …],
+     "example": {"$what": "egg"}, "effect": ["boiled(what)"], "history": [{"version": 1, "body": "…",
+     "validation": "passed", "problems": [], "author": "…", "at": "…", "note": "learnt", "restores": null}, …],
      "reviews": [{"version": 1, "status": "approved", "reviewer": "ann", "at": "…"}, …]}, …]}
 
-Files of schema version 2 (before the review log) are read too, their entries without "reviews".
+Files of schema version 2 (before the review log) are read too, their entries without "reviews"; an entry
+without "effect" (or with null) has none recorded.
 
 Import compares each entry with this library's entries for the same action (primitive set, verb, signature):
 - none here: added with its status, versions and reviews, plus one version saying who imported it;
-- the same body here (or, for an entry the file rejects, already rejected here): unchanged;
-- an approved entry here with another body: a conflict, never overwritten;
-- a pending entry here with another body: a conflict, unless `replace_pending`, which adds the file's body
-  to it as a new version (still pending, for review);
+- the same body here, with the same effect unless the file records none (or, for an entry the file
+  rejects, the same body already rejected here): unchanged;
+- an approved entry here with another body or effect: a conflict, never overwritten;
+- a pending entry here with another body or effect: a conflict, unless `replace_pending`, which adds the
+  file's body (and effect, if it records one) to it as a new version (still pending, for review);
 - a rejected entry in the file whose body is live here: a conflict, for the lab to review; other rejected
   entries are added as records;
 - a live entry in the file whose body was rejected here: a conflict, kept rejected;
@@ -34,6 +36,7 @@ from datetime import datetime
 from pathlib import Path
 
 from cook2ltl.errors import UserError
+from cook2ltl.library.effect import KEEP, checked_effect
 from cook2ltl.library.schema import SCHEMA_VERSION, VALIDATIONS
 from cook2ltl.library.store import Library, LibraryEntry, Status
 from cook2ltl.library.versions import Review, Version, now
@@ -96,8 +99,9 @@ def import_library(library: Library, path: Path, by: str, replace_pending: bool 
             if outcome == ADDED:
                 here.append(_insert(library, record, by, note))
             elif outcome == REPLACED:
+                effect = KEEP if entry.effect is None else entry.effect
                 here[here.index(local)] = library.edit(local.id, entry.body, by, entry.validation, entry.problems,
-                                                       note)
+                                                       note, effect)
                 label += f" (entry {local.id})"
             report[outcome].append(f"{label}: {reason}" if reason else label)
     return ImportReport(*(tuple(report[outcome]) for outcome in (ADDED, UNCHANGED, REPLACED, CONFLICT)))
@@ -109,7 +113,8 @@ def _outcome(entry: LibraryEntry, here: list[LibraryEntry],
     entry it concerns, and for a conflict, why."""
     rejected = entry.status == Status.REJECTED
     live = next((e for e in here if e.status != Status.REJECTED), None)
-    if any(e.body == entry.body and (e.status == Status.REJECTED) == rejected for e in here):
+    if any(e.body == entry.body and (e.status == Status.REJECTED) == rejected and (rejected or _same_effect(entry, e))
+           for e in here):  # a rejected entry is a record: its effect does not matter
         return UNCHANGED, None, ""
     if rejected:
         if live is not None and live.body == entry.body:
@@ -120,14 +125,20 @@ def _outcome(entry: LibraryEntry, here: list[LibraryEntry],
         return CONFLICT, refused, f"entry {refused.id} rejected this body here; kept rejected"
     if live is None:
         return ADDED, None, ""
+    other = "effect" if live.body == entry.body else "body"
     if live.status == Status.APPROVED:
-        return CONFLICT, live, f"entry {live.id} is approved here with another body; kept"
+        return CONFLICT, live, f"entry {live.id} is approved here with another {other}; kept"
     if not entry.has_plan:
         return CONFLICT, live, f"the file has no plan for it; entry {live.id} keeps its body"
     if not replace_pending:
-        return CONFLICT, live, (f"entry {live.id} is pending here with another body; kept "
-                                "(--replace-pending adds the file's body to it as a new version)")
+        return CONFLICT, live, (f"entry {live.id} is pending here with another {other}; kept "
+                                f"(--replace-pending adds the file's {other} to it as a new version)")
     return REPLACED, live, ""
+
+
+def _same_effect(entry: LibraryEntry, here: LibraryEntry) -> bool:
+    """A file that records no effect (an older export) says nothing against the effect here."""
+    return entry.effect is None or entry.effect == here.effect
 
 
 def _insert(library: Library, record: Exported, by: str, note: str) -> LibraryEntry:
@@ -189,6 +200,7 @@ def _read_entry(raw, where: str) -> Exported:
         validation=fields.choice("validation", VALIDATIONS), problems=fields.words("problems"),
         reviewed_by=fields.get("reviewed_by", str, optional=True),
         reviewed_at=fields.time("reviewed_at", optional=True), example=fields.example(), version=numbers[-1],
+        effect=fields.effect(),
     )
     if entry.status == Status.APPROVED and not entry.has_plan:
         raise UserError(f"{where}: an entry with no plan (an empty \"body\") cannot be approved.", HINT)
@@ -273,6 +285,13 @@ class _Fields:
             raise UserError(f"{self.where}: \"example\" must map placeholders such as \"$what\" to values.", HINT)
         return tuple(value.items())
 
+    def effect(self) -> tuple[str, ...] | None:
+        """Atom templates such as "boiled(what)"; None when the file records none."""
+        value = self.get("effect", list, optional=True)
+        if value is not None and not all(isinstance(item, str) for item in value):
+            raise UserError(f"{self.where}: \"effect\" must be a list of atoms such as \"boiled(what)\".", HINT)
+        return checked_effect(value, f"{self.where}: \"effect\"")
+
 
 _KINDS = {str: "a string", int: "a whole number", list: "a list", dict: "an object"}
 
@@ -284,6 +303,7 @@ def _record(record: Exported) -> dict:
         "status": entry.status.value, "model": entry.model, "prompt_hash": entry.prompt_hash,
         "created": entry.created, "validation": entry.validation, "problems": list(entry.problems),
         "reviewed_by": entry.reviewed_by, "reviewed_at": entry.reviewed_at, "example": dict(entry.example),
+        "effect": None if entry.effect is None else list(entry.effect),
         "history": [{"version": v.version, "body": v.body, "validation": v.validation, "problems": list(v.problems),
                      "author": v.author, "at": v.at, "note": v.note, "restores": v.restores} for v in record.history],
         "reviews": [{"version": r.version, "status": r.status, "reviewer": r.reviewer, "at": r.at}

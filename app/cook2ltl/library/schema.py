@@ -82,7 +82,13 @@ def _review_log(db: Database) -> None:
                     f"SELECT id, version, status, reviewed_by, reviewed_at FROM {TABLE} WHERE reviewed_by IS NOT NULL")
 
 
-MIGRATIONS = (_create_actions, _review_versions_and_search, _review_log)
+def _intended_effect(db: Database) -> None:
+    """The effect an entry's plan must reach, kept with it (see `effect`): a JSON list of atom templates such as
+    "boiled(what)"; NULL, as every entry gets here, when it is not recorded."""
+    db.conn.execute(f"ALTER TABLE {TABLE} ADD COLUMN effect TEXT")
+
+
+MIGRATIONS = (_create_actions, _review_versions_and_search, _review_log, _intended_effect)
 SCHEMA_VERSION = len(MIGRATIONS)
 
 

@@ -1,15 +1,15 @@
 """The action library 𝔸: parametric reductions in one SQLite file, shared by every run.
 
 One row per learnt action: the primitive set it is written in, the verb, its signature (the categories
-it fills), the body with `$what`-style placeholders, a review status, the kitchen check of the body and
-where it came from. At most one row per (primitive set, verb, signature) is live (not rejected); every
-body an entry ever had is kept in `versions`, every approval and rejection in `reviews`. A model's
-reduction is stored pending and never approved by the program: a person approves it, and that approval
-wins over any later reduction. An entry with an empty body records that the model wrote no admissible plan:
-it spares asking the model again and shows the lab a body to write; it is never approved, and never a verb
-that other bodies call. The schema and its migrations are in `schema`. Each thread gets its own
-connection (sqlite3 refuses to share one), WAL lets a reader and a writer work side by side, and every
-write is one transaction.
+it fills), the body with `$what`-style placeholders, a review status, the kitchen check of the body,
+where it came from and its intended effect (see `effect`). At most one row per (primitive set, verb,
+signature) is live (not rejected); every body an entry ever had is kept in `versions`, every approval
+and rejection in `reviews`. A model's reduction is stored pending and never approved by the program: a
+person approves it, and that approval wins over any later reduction. An entry with an empty body records
+that the model wrote no admissible plan: it spares asking the model again and shows the lab a body to
+write; it is never approved, and never a verb that other bodies call. The schema and its migrations are
+in `schema`. Each thread gets its own connection (sqlite3 refuses to share one), WAL lets a reader and a
+writer work side by side, and every write is one transaction.
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ from sqlite_utils import Database
 
 from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.library import versions
+from cook2ltl.library.effect import KEEP, Keep, checked_effect, shown_effect
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
 from cook2ltl.library.versions import Review, Version, checked, now
 from cook2ltl.reduce.body import is_empty
@@ -63,6 +64,7 @@ class LibraryEntry:
     reviewed_at: str | None = None
     example: tuple[tuple[str, str], ...] = ()  # placeholder → value of the action it was learnt from
     version: int = 1
+    effect: tuple[str, ...] | None = None  # atom templates over the slots, such as boiled(what); None: not recorded
 
     @property
     def action(self) -> str:
@@ -149,13 +151,15 @@ class Library:
 
     def add(self, primitives: str, verb: str, signature: tuple[str, ...], body: str, model: str, prompt_hash: str,
             replacing: int | None = None, validation: str = "unchecked", problems: Sequence[str] = (),
-            example: Mapping[str, str] | None = None) -> LibraryEntry:
-        """Store a model's reduction as a new pending entry (version 1). `replacing` is a live entry that no longer
-        fits: a pending one is rejected in the same transaction, an approved one wins and is returned unchanged.
-        If another process stored the same action first, that entry is returned."""
+            example: Mapping[str, str] | None = None, effect: Sequence[str] | None = None) -> LibraryEntry:
+        """Store a model's reduction as a new pending entry (version 1), with its intended effect (atom templates
+        such as "boiled(what)"; a bad one is a UserError and nothing is written). `replacing` is a live entry that
+        no longer fits: a pending one is rejected in the same transaction, an approved one wins and is returned
+        unchanged. If another process stored the same action first, that entry is returned."""
         db = self._db()
         entry = LibraryEntry(0, primitives, verb, signature, body, Status.PENDING, model, prompt_hash, now(),
-                             checked(validation), tuple(problems), example=tuple(dict(example or {}).items()))
+                             checked(validation), tuple(problems), example=tuple(dict(example or {}).items()),
+                             effect=checked_effect(effect))
         try:
             with self._writing():
                 old = self._row(replacing, missing_ok=True) if replacing is not None else None
@@ -193,11 +197,13 @@ class Library:
         return self.get(entry_id)
 
     def edit(self, entry_id: int, body: str, by: str, validation: str = "unchecked", problems: Sequence[str] = (),
-             note: str = "") -> LibraryEntry:
-        """A new body as a new version (the caller checks and validates it first); the entry returns to pending,
-        unreviewed, for someone to approve."""
+             note: str = "", effect: Sequence[str] | None | Keep = KEEP) -> LibraryEntry:
+        """A new body (or the same one with another effect) as a new version (the caller checks and validates the
+        body first); the entry returns to pending, unreviewed, for someone to approve. `effect`: the new intended
+        effect (None: not recorded), checked before anything is written; KEEP leaves it as it is."""
+        effect = effect if effect is KEEP else checked_effect(effect)
         with self._writing():
-            self._new_version(self._row(entry_id), body, by, validation, tuple(problems), note)
+            self._new_version(self._row(entry_id), body, by, validation, tuple(problems), note, effect)
         return self.get(entry_id)
 
     def undo(self, entry_id: int, by: str) -> LibraryEntry:
@@ -209,7 +215,7 @@ class Library:
                 raise UserError(f"Entry {entry_id} has no earlier version to go back to.",
                                 f"`cook2ltl library history {entry_id}` shows its versions.")
             self._new_version(row, target.body, by, target.validation, target.problems,
-                              f"undo: back to version {target.version}", restores=target.version)
+                              f"undo: back to version {target.version}", KEEP, restores=target.version)
         return self.get(entry_id)
 
     def insert(self, entry: LibraryEntry, history: Sequence[Version], reviews: Sequence[Review] = ()) -> LibraryEntry:
@@ -272,14 +278,19 @@ class Library:
         versions.record_review(db, Review(entry_id, self.get(entry_id).version, status.value, by, at))
 
     def _new_version(self, row: dict, body: str, by: str, validation: str, problems: tuple[str, ...], note: str,
-                     restores: int | None = None) -> None:
+                     effect: tuple[str, ...] | None | Keep, restores: int | None = None) -> None:
         db = self._db()
         number = row["version"] + 1
+        old = _effect(row["effect"])
+        effect = old if effect is KEEP else effect
+        if effect != old:  # versions keep bodies only: the note tells the history of the new effect
+            note = "; ".join(part for part in (note, f"effect: {shown_effect(effect)}") if part)
         versions.record(db, Version(row["id"], number, body, validation, problems, by, now(), note, restores))
         try:
             db.conn.execute(f"UPDATE {TABLE} SET body = ?, validation = ?, problems = ?, version = ?, status = ?, "
-                            "reviewed_by = NULL, reviewed_at = NULL WHERE id = ?",
-                            [body, validation, json.dumps(list(problems)), number, Status.PENDING.value, row["id"]])
+                            "reviewed_by = NULL, reviewed_at = NULL, effect = ? WHERE id = ?",
+                            [body, validation, json.dumps(list(problems)), number, Status.PENDING.value,
+                             _effect_column(effect), row["id"]])
         except sqlite3.IntegrityError as error:
             raise self._taken(_entry(row)) from error
 
@@ -338,6 +349,7 @@ def _columns(entry: LibraryEntry) -> dict:
         "prompt_hash": entry.prompt_hash, "created": entry.created, "validation": checked(entry.validation),
         "problems": json.dumps(list(entry.problems)), "reviewed_by": entry.reviewed_by,
         "reviewed_at": entry.reviewed_at, "example": json.dumps(dict(entry.example)), "version": entry.version,
+        "effect": _effect_column(entry.effect),
     }
 
 
@@ -348,4 +360,13 @@ def _entry(row: dict) -> LibraryEntry:
         status=Status(row["status"]), model=row["model"], prompt_hash=row["prompt_hash"], created=row["created"],
         validation=row["validation"], problems=tuple(json.loads(row["problems"])), reviewed_by=row["reviewed_by"],
         reviewed_at=row["reviewed_at"], example=tuple(json.loads(row["example"]).items()), version=row["version"],
+        effect=_effect(row["effect"]),
     )
+
+
+def _effect_column(effect: tuple[str, ...] | None) -> str | None:
+    return None if effect is None else json.dumps(list(effect))
+
+
+def _effect(column: str | None) -> tuple[str, ...] | None:
+    return None if column is None else tuple(json.loads(column))

@@ -45,12 +45,22 @@ def verb_table(path: Path | None = None) -> dict[str, tuple[Template, ...]]:
     return {verb: tuple(_template(verb, atom, path) for atom in atoms) for verb, atoms in raw.items()}
 
 
-def _template(verb: str, text: str, path: Path) -> Template:
+def parse_template(text: str) -> Template:
+    """One effect atom such as `in(what, fridge)`: the table's syntax, also for effects a library entry keeps."""
     match = _ATOM.match(text) if isinstance(text, str) else None
-    if match is None or match[1] in NEVER:
-        raise UserError(f"{path}: {verb} = {text!r} is not an effect atom such as boiled(what).",
-                        "effects are observable states; done and ready are never effects.")
+    if match is None:
+        raise ValueError(f"{text!r} is not an effect atom such as boiled(what)")
+    if match[1] in NEVER:
+        raise ValueError(f"{text!r}: {match[1]} is never an effect (the world cannot observe it)")
     return match[1], tuple(arg.strip() for arg in match[2].split(",") if arg.strip())
+
+
+def _template(verb: str, text: str, path: Path) -> Template:
+    try:
+        return parse_template(text)
+    except ValueError as error:
+        raise UserError(f"{path}: {verb} = {text!r} is not an effect atom such as boiled(what).",
+                        "effects are observable states; done and ready are never effects.") from error
 
 
 def known_verb(verb: str, table: dict[str, tuple[Template, ...]] | None = None) -> str | None:

@@ -1,4 +1,5 @@
-"""One library entry in full: its body, its provenance and review, the kitchen check, and every version."""
+"""One library entry in full: its body, its provenance and review, the kitchen check, the intended effect, and
+every version."""
 
 from __future__ import annotations
 
@@ -47,11 +48,14 @@ def _body(entry: LibraryEntry) -> Content:
 
 
 def _review(entry: LibraryEntry) -> Content:
+    from cook2ltl.library.effect import shown_effect
+
     reviewed = f"  by {entry.reviewed_by} at {entry.reviewed_at}" if entry.reviewed_by else ""
     lines = [
         _label("status") + status_content(entry.status.value) + Content(reviewed).stylize("$text-muted"),
         _label("kitchen") + check_content(entry.validation),
         *(Content(f"{'':<11}✗ {problem}").stylize("$text-error") for problem in entry.problems),
+        _label("effect") + Content(shown_effect(entry.effect)),
         _label("learnt by") + Content(f"{entry.model} · prompt {entry.prompt_hash[:12] or '—'} · {entry.created}"),
     ]
     if entry.example:
