@@ -76,10 +76,11 @@ class Frame:
     temperature: tuple[Argument, ...] = ()
     negated: bool = False
     objects_joined_by: Connective = Connective.AND
+    particle: str = ""  # of a phrasal verb outside the verb's span: "turn the oven *on*"
 
     @property
     def name(self) -> str:
-        return self.verb.text.lower()
+        return f"{self.verb.text} {self.particle}".lower() if self.particle else self.verb.text.lower()
 
     def arguments(self, label: Label) -> tuple[Argument, ...]:
         return getattr(self, _FIELD_OF[label])

@@ -32,6 +32,7 @@ from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.parse.recipe import parse_recipe
 from cook2ltl.reduce.action import actions_of
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders
+from cook2ltl.reduce.intents import Intents
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand
@@ -41,6 +42,7 @@ from cook2ltl.translate.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
+from cook2ltl.world.effects import template_text
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
 
@@ -243,6 +245,8 @@ class _Run:
         self.verbs: list[LibraryVerb] = []
         self.world_state = self.world_start = None  # the world model's state: where the recipe has got to
         self.world_binding: dict[str, str] = {}  # in a THOR kitchen, the objectId each name stands for
+        self.intents = None if translator.grounding is None else Intents(
+            translator.grounding.world, translator.model if hasattr(translator.model, "complete_lines") else None)
         self._refresh()
 
     def action(self, frame_index: int, action: Action) -> tuple[ActionResult, Element | None]:
@@ -253,7 +257,7 @@ class _Run:
             calls = direct_calls(action, primitive)
             if calls is not None:
                 self._count(primitive=1)
-                grounded = self._ground(action, calls, "recipe")
+                grounded = self._ground(action, calls, "recipe", self._effect(action, write=False))
                 plan = grounded.plan if grounded else calls
                 result = ActionResult(frame_index, Reduction(action, calls, Source.PRIMITIVE), plan, check=grounded)
                 element = direct_element(action, calls, primitives) if plan == calls else plan_element(plan, primitives)
@@ -270,7 +274,7 @@ class _Run:
             plan = self._expand(body) if body is not None else None
             if plan:
                 self._count(library_hits=1)
-                grounded = self._ground(action, plan, "library")
+                grounded = self._ground(action, plan, "library", self._effect(action, entry.effect))
                 plan = grounded.plan if grounded else plan
                 reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
                 result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
@@ -320,13 +324,10 @@ class _Run:
             self.world_state = self.world_start = start.state
             self.world_binding = dict(start.binding)
 
-    def _effect(self, action: Action) -> tuple:
-        """The states `action` must leave, in the world where the recipe has got to (none without a world)."""
-        if self.t.grounding is None:
-            return ()
-        from cook2ltl.world.effects import intended_effect
-
-        return intended_effect(action, self.t.grounding.world, self.world_state) or ()
+    def _effect(self, action: Action, stored: tuple[str, ...] | None = None, write: bool = True) -> tuple:
+        """The states `action` must leave (a library entry's `stored` effect, else the table's, else the
+        model's if it may `write` one), in the world where the recipe has got to; none without a world."""
+        return () if self.intents is None else self.intents.facts(action, self.world_state, stored, write)
 
     def _ground(self, action: Action, plan: tuple[Call, ...], origin: str, effect: tuple | None = None
                 ) -> PlanCheck | None:
@@ -348,9 +349,11 @@ class _Run:
             problems = validation.messages() if validation else ()
         else:
             body, status, problems = "", "failed", (NO_PLAN_PROBLEM,)
+        effect = None if self.intents is None else [
+            template_text(t) for t in self.intents.templates(action, self.world_state)]
         entry = self.t.library.add(self.t.primitives.name, action.verb, action.signature, body, self.t.model.name,
                                    reduction.prompt_hash, replacing=stale, validation=status, problems=problems,
-                                   example=placeholders(action))
+                                   example=placeholders(action), effect=effect)
         self._count(new_entries=1)
         if plan:
             self._refresh()

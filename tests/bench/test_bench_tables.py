@@ -187,3 +187,13 @@ def test_refused_plans_are_counted_by_kind_with_their_objects_left_out():
     table = table1_markdown(rows, total=2)
     assert "AR+𝔸 (library from empty), scripted, plans refused by the kitchen (1), by first problem: " \
            "turn_on: too short (1)." in table
+
+
+def test_the_world_variant_reports_effects_reached_and_the_planners_lines():
+    rows, _, _ = measured(variants=("AR+A world",))
+    (row,) = rows
+    # boil egg, fry onion, melt butter are new; the planner completes each to its effect (the fake model's
+    # fry has no admissible line, so the planner writes the whole plan).
+    assert row["world_new"] == 3 and row["world_reached"] == 3 and row["world_no_effect"] == 0
+    assert row["world_planner_lines"] > 0 and row["world_as_written"] < 3
+    assert "AR+𝔸 in the world model: 1.00" in table1_markdown(rows, 2)

@@ -127,3 +127,20 @@ def test_a_pronoun_with_nothing_before_it_stays():
     text = "Rinse it."
     recipe = parse(text, {text: [("VERB", "Rinse"), ("WHAT", "it")]})
     assert [(a.span.text, a.inferred) for a in recipe.steps[0].frames[0].what] == [("it", False)]
+
+
+def test_the_particle_of_a_phrasal_verb_joins_the_verb():
+    """"Turn the stove on" and "turn off the heat" (a particle, however the parse attaches it) are their own
+    verbs; "spread on the bread" keeps "on the bread" as where the spread goes."""
+    after = "Turn the stove on."
+    recipe = parse(after, {after: [("VERB", "Turn"), ("WHAT", "the stove")]}, {after: {"on": ("prt", "Turn")}})
+    assert signatures(recipe) == [["turn on(the stove)"]]
+    before = "Switch off the heat."
+    recipe = parse(before, {before: [("VERB", "Switch"), ("WHAT", "the heat")]}, {before: {"off": ("prep", "Switch")}})
+    assert signatures(recipe) == [["switch off(the heat)"]]
+    place = "Spread on the bread."
+    recipe = parse(place, {place: [("VERB", "Spread"), ("WHERE", "on the bread")]}, {place: {"on": ("prep", "Spread")}})
+    assert signatures(recipe) == [["spread(on the bread)"]]
+    inside = "Stir in the cheese."
+    recipe = parse(inside, {inside: [("VERB", "Stir"), ("WHAT", "the cheese")]}, {inside: {"in": ("prt", "Stir")}})
+    assert signatures(recipe) == [["stir(the cheese)"]]

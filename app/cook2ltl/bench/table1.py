@@ -7,7 +7,10 @@ the kitchen check; AR (primitives passed through); AR* (every action reduced); a
 the kitchen refuses goes back to the model twice, as `cook2ltl translate` does) from an empty library. The
 model decodes greedily, so what differs between runs is the order in which the library meets the recipes:
 the first run takes the file's order, each later one a shuffle seeded by its run's seed. AR and AR* do not
-depend on the order, so their runs differ in time only.
+depend on the order, so their runs differ in time only. AR+𝔸 in the world model (from an empty library of its
+own) decodes every new reduction against the recipe set's world model, where the recipe has got to, and lets
+the planner complete it; there the world model is the judge, so its row reports how many new reductions
+reach their intended effect, and how many lines the planner wrote.
 
 Every new reduction is run in the kitchen (cook2ltl.reduce.validation) without changing what is cached or
 which actions reach the model (no repairs, except in the repair variant): the validated rate is the share of
@@ -35,13 +38,14 @@ from cook2ltl.bench.results import pm, write
 from cook2ltl.domain import ParsedRecipe
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline import Finished, Translation, Translator, Variant, rates, translate
+from cook2ltl.reduce.model import Source
 from cook2ltl.reduce.validation import PlanValidator
 
 RECIPES_FILE = "eval_recipes_50.csv"
-COLD, WARM, APPROVED, REPAIR = "AR+A", "AR+A warm", "AR+A approved-only", "AR+A repair"
+COLD, WARM, APPROVED, REPAIR, WORLD = "AR+A", "AR+A warm", "AR+A approved-only", "AR+A repair", "AR+A world"
 # What the library saves first, then the paper's baselines, the costly repairs last; WARM and APPROVED need
 # COLD's library.
-VARIANTS = (COLD, WARM, APPROVED, "AR", "AR*", REPAIR)
+VARIANTS = (COLD, WARM, APPROVED, "AR", "AR*", WORLD, REPAIR)
 SMOKE_VARIANTS = (COLD, WARM, "AR*")  # the other variants' logic is covered by the unit tests
 REVIEWER = "bench"
 FIRST_SEED = 4242  # its run keeps the file's order of the recipes
@@ -50,7 +54,7 @@ REPAIRS = 2
 PAPER = {"AR*": (0.91, 14.85, 275), "AR": (0.92, 9.89, 231), "AR+A": (0.94, 6.05, 134)}
 LABELS = {"AR*": "AR* (reduce every action)", "AR": "AR (skip primitives)", COLD: "AR+𝔸 (library from empty)",
           WARM: "AR+𝔸 warm rerun (grown library)", APPROVED: "AR+𝔸 approved-only (checked plans approved)",
-          REPAIR: "AR+𝔸 with repairs (library from empty)"}
+          REPAIR: "AR+𝔸 with repairs (library from empty)", WORLD: "AR+𝔸 in the world model (library from empty)"}
 
 
 @dataclass(frozen=True)
@@ -145,11 +149,24 @@ def _summary(totals: dict[str, float], translations: list[Translation], stage: S
         **{key: round(value, 3) if isinstance(value, float) else value for key, value in totals.items()},
         "executability": totals["admissible"] / planned if planned else 0.0,
         "line_executability": counts.executability, "new_reductions": counts.new_reductions,
-        "validated_rate": counts.validated_rate, "refusals": refusals(translations),
+        "validated_rate": counts.validated_rate, "refusals": refusals(translations), **world_counts(translations),
         # The recipes' parse is shared by the variants of a run; each variant's time includes it.
         "wall_seconds": round(totals.get("seconds", 0.0) - totals["check_seconds"] + stage.parse_seconds, 3),
         "recipes_done": len(translations),
     }
+
+
+def world_counts(translations: list[Translation]) -> dict:
+    """New reductions checked in the world model: how many reach their intended effect (with a plan), how many
+    had no effect the world observes, how many applied as the model wrote them, and the planner's lines."""
+    new = [r for t in translations for s in t.steps for r in s.actions
+           if r.reduction.source == Source.LLM and r.check is not None]
+    if not new:
+        return {}
+    return {"world_new": len(new), "world_reached": sum(1 for r in new if r.plan and r.check.effect_reached),
+            "world_no_effect": sum(1 for r in new if not r.check.effect),
+            "world_as_written": sum(1 for r in new if r.check.applicable and r.check.planner_lines == 0 and r.plan),
+            "world_planner_lines": sum(r.check.planner_lines for r in new)}
 
 
 def in_run_order(stage: Stage, seed: int) -> Stage:
@@ -212,23 +229,32 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
         run_stage = in_run_order(stage, run_seed)
         with tempfile.TemporaryDirectory() as folder:
             grown, fresh = Library(Path(folder) / "grown.sqlite"), Library(Path(folder) / "repair.sqlite")
+            own = Library(Path(folder) / "world.sqlite")
             try:
                 for name in [v for v in VARIANTS if v in variants]:
                     if name == APPROVED:
                         approve_checked(grown)
                     variant = Variant(name) if name in ("AR", "AR*") else Variant.AR_LIBRARY
-                    library = fresh if name == REPAIR else grown if variant == Variant.AR_LIBRARY else None
-                    translator = Translator(primitives, model, library, variant, validator=validator,
-                                            repairs=REPAIRS if name == REPAIR else 0, approved_only=name == APPROVED)
+                    library = {REPAIR: fresh, WORLD: own}.get(name, grown if variant == Variant.AR_LIBRARY else None)
+                    translator = Translator(primitives, model, library, variant,
+                                            validator=None if name == WORLD else validator,
+                                            repairs=REPAIRS if name == REPAIR else 0, approved_only=name == APPROVED,
+                                            grounding=world_grounding(primitives) if name == WORLD else None)
                     head = {"variant": name, "model": model.name, "seed": run_seed}
                     rows.append(head | run_variant(run_stage, translator, lambda partial: report(rows + [head | partial])))
                     report(rows)
                     echo(f"run {index + 1} {name:<18} calls {rows[-1]['llm_calls']:>4}  executability "
                          f"{rows[-1]['executability']:.3f}  {rows[-1]['wall_seconds'] / 60:.2f} min")
             finally:
-                grown.close()
-                fresh.close()
+                for library in (grown, fresh, own):
+                    library.close()
     return rows
+
+
+def world_grounding(primitives):
+    from cook2ltl.world.kitchens import grounding
+
+    return grounding(primitives)
 
 
 def approve_checked(library) -> int:
@@ -267,11 +293,25 @@ def table1_markdown(rows: list[dict], total: int, bound: dict | None = None) -> 
             + f" | {pm([r['prompt_tokens'] for r in complete], 0)} "
             f"| {pm([r['completion_tokens'] for r in complete], 0)} "
             f"| {pm([r['wall_seconds'] / 60 for r in complete])} | {paper_cell} |")
-    notes = _ratios(groups, total)
+    notes = _ratios(groups, total) + "".join(world_note(model, group or groups[(variant, model)][-1:])
+                                             for (variant, model), group in complete_groups.items() if variant == WORLD)
     refused = "".join(refusals_note(f"{LABELS[variant]}, {model}", group[0].get("refusals", {}))
                       for (variant, model), group in complete_groups.items() if group and variant in (COLD, REPAIR))
     return ("\n".join(lines) + "\n" + notes + (bound_note(bound) if bound else "")
             + (f"\n{refused}" if refused else ""))
+
+
+def world_note(model: str, rows: list[dict]) -> str:
+    rows = [r for r in rows if r.get("world_new")]
+    if not rows:
+        return ""
+    reached = [r["world_reached"] / r["world_new"] for r in rows]
+    as_written = [r["world_as_written"] / r["world_new"] for r in rows]
+    return (f"\n{model}, AR+𝔸 in the world model: {pm(reached)} of the new reductions reach their intended effect "
+            f"({pm([r['world_reached'] for r in rows], 0)} of {pm([r['world_new'] for r in rows], 0)}; "
+            f"{pm([r['world_no_effect'] for r in rows], 0)} with no effect the world observes); "
+            f"{pm(as_written)} reach it as the model wrote them; the planner wrote "
+            f"{pm([r['world_planner_lines'] for r in rows], 0)} lines.\n")
 
 
 def bound_note(bound: dict) -> str:

@@ -26,7 +26,7 @@ KEEP = Keep.KEEP  # Library.edit(effect=KEEP): the entry keeps the effect it has
 def checked_effect(effect: Sequence[str] | None, where: str = "effect") -> tuple[str, ...] | None:
     """The effect as stored: each atom checked, written one way (`in(what, fridge)`), duplicates dropped.
     A bad atom is a UserError that starts with `where`."""
-    from cook2ltl.world.effects import parse_template  # only when an effect is written: it loads the world
+    from cook2ltl.world.effects import parse_template, template_text  # only when an effect is written
 
     if effect is None:
         return None
@@ -35,10 +35,9 @@ def checked_effect(effect: Sequence[str] | None, where: str = "effect") -> tuple
     atoms: dict[str, None] = {}
     for text in effect:
         try:
-            predicate, arguments = parse_template(text)
+            atoms[template_text(parse_template(text))] = None
         except ValueError as error:
             raise UserError(f"{where}: {error}.", HINT) from error
-        atoms[f"{predicate}({', '.join(arguments)})"] = None
     return tuple(atoms)
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Sequence
 
 from cook2ltl.domain import ARGUMENT_LABELS, Argument, Connective, Frame, Label, Span, Token, field_of
-from cook2ltl.parse.coordination import connective_between, is_negated, split_objects, split_verb
+from cook2ltl.parse.coordination import connective_between, is_negated, particle, split_objects, split_verb
 
 
 def build_frames(spans: Sequence[Span], tokens: Sequence[Token]) -> tuple[tuple[Frame, ...], tuple[Connective, ...]]:
@@ -68,5 +68,6 @@ def _frame(verb: Span, arguments: Sequence[Span], tokens: Sequence[Token], negat
             filled["what"].extend(Argument(piece) for piece in pieces)
         else:
             filled[field_of(span.label)].append(Argument(span))
-    return Frame(verb=verb, negated=negated, objects_joined_by=joined, **{k: tuple(v) for k, v in filled.items()})
+    return Frame(verb=verb, negated=negated, objects_joined_by=joined, particle=particle(verb, tokens, arguments),
+                 **{k: tuple(v) for k, v in filled.items()})
 

@@ -33,6 +33,9 @@ class WorldSpec:
     # what the planner may use besides a goal's objects, by goal predicate ("*": always); None: everything
     kit: tuple[tuple[str, tuple[str, ...]], ...] | None = None
     planner: bool = True  # whether a planner completes plans in this world (False: they are checked only)
+    # the binary predicate by which the world tells where a liquid is, container first (THOR: filled-with);
+    # None: a liquid is a thing like any other, `in` a container and with states of its own
+    liquid_fill: str | None = None
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,7 @@ from cook2ltl.reduce.model import CONDITION, Primitive, PrimitiveSet, WorldSpec
 
 BUILT_IN = ("recipe", "ai2thor")
 IDENTIFIER = re.compile(r"[a-z][a-z0-9_]*\Z")
+PDDL_NAME = re.compile(r"[a-z][a-z0-9_-]*\Z")
 VALUE = re.compile(r"[a-z0-9][a-z0-9_]*\Z")
 THOR_KITCHENS = "thor"  # a [world] kitchen: the 30 AI2-THOR kitchens
 
@@ -74,7 +75,8 @@ def _primitive_set(raw: dict, path: Path) -> PrimitiveSet:
 
 def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
     """[world]: domain = "x.pddl", kitchen = "k.toml" or "thor", kit = [objects the planner may use],
-    planner = true (false: plans are checked, never completed), [world.states] word = "predicate"."""
+    planner = true (false: plans are checked, never completed), liquids = "filled-with" (the predicate
+    telling which container a liquid fills, when liquids are not `in` things), [world.states] word = "predicate"."""
     table = raw.get("world")
     if table is None:
         return None
@@ -97,7 +99,11 @@ def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
     planner = table.get("planner", True)
     if not isinstance(planner, bool):
         raise bad("[world] planner must be true or false.")
-    return WorldSpec(domain, where, tuple(sorted(states.items())), tuple((p, tuple(v)) for p, v in kit.items()) if kit is not None else None, planner)
+    liquid_fill = table.get("liquids")
+    if liquid_fill is not None and not (isinstance(liquid_fill, str) and PDDL_NAME.match(liquid_fill)):
+        raise bad("[world] liquids must name a predicate, such as \"filled-with\".")
+    kit = tuple((p, tuple(v)) for p, v in kit.items()) if kit is not None else None
+    return WorldSpec(domain, where, tuple(sorted(states.items())), kit, planner, liquid_fill)
 
 
 def _words(raw: dict, key: str, bad) -> tuple[str, ...]:

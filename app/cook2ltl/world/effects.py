@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 import tomllib
 from functools import cache
+from collections.abc import Sequence
 from itertools import product
 from pathlib import Path
 
@@ -71,25 +72,60 @@ def known_verb(verb: str, table: dict[str, tuple[Template, ...]] | None = None) 
     return first if first in table else None
 
 
-def intended_effect(action: Action, world: World, state: State) -> tuple[Fact, ...] | None:
-    """The facts `action` must make true, in `world`'s predicates, over objects of `state`; None when the
-    table does not know the verb. Atoms the world cannot observe or whose objects it lacks are left out."""
+def table_effect(verb: str) -> tuple[Template, ...] | None:
+    """The verb's effect templates from the table (or its first word's); None when the table lacks it."""
     table = verb_table()
-    verb = known_verb(action.verb, table)
-    if verb is None:
+    known = known_verb(verb, table)
+    return None if known is None else table[known]
+
+
+def intended_effect(action: Action, world: World, state: State,
+                    templates: Sequence[Template] | None = None) -> tuple[Fact, ...] | None:
+    """The facts `action` must make true, in `world`'s predicates, over objects of `state`: `templates` (an
+    entry's own), else the table's; None when the table does not know the verb. Atoms the world cannot
+    observe or whose objects it lacks are left out."""
+    templates = table_effect(action.verb) if templates is None else templates
+    if templates is None:
         return None
     slots = {slot: [p.value for p in action.parameters if p.category == slot] for slot in SLOTS}
     facts: dict[Fact, None] = {}
-    for predicate, args in table[verb]:
-        name = world.predicate(predicate) if len(args) == 1 else predicate
-        if name is None or world.domain.predicates.get(name) != len(args):
-            continue
+    for predicate, args in templates:
         choices = [slots[a] if a in SLOTS else [a] for a in args]
         for values in product(*choices):
             if all(v in state.objects for v in values) and len(set(values)) == len(values):
-                facts[(name, *values)] = None
+                facts |= dict.fromkeys(_observed(world, state, predicate, values, slots))
     return tuple(facts)
+
+
+def _observed(world: World, state: State, predicate: str, values: tuple[str, ...],
+              slots: dict[str, list[str]]) -> tuple[Fact, ...]:
+    """An atom in the world's own predicates. Where the world tells a liquid by the container it fills (THOR),
+    a liquid in a container is that container filled with it, and a liquid's state is its container's
+    (boiled water is a hot kettle full of water): the action's container, else the one already holding it."""
+    liquids = [v for v in values if ("liquid", v) in state.facts] if world.liquid_fill else []
+    if liquids and predicate == "in" and values[0] in liquids:
+        return ((world.liquid_fill, values[1], values[0]),)
+    if liquids and len(values) == 1:
+        container = _container_of(world, state, values[0], slots)
+        if container is None:
+            return ()
+        held = _observed(world, state, predicate, (container,), slots)
+        return (*held, (world.liquid_fill, container, values[0])) if held else ()
+    name = world.predicate(predicate) if len(values) == 1 else predicate
+    if name is None or world.domain.predicates.get(name) != len(values):
+        return ()
+    return ((name, *values),)
+
+
+def _container_of(world: World, state: State, liquid: str, slots: dict[str, list[str]]) -> str | None:
+    named = [v for slot in ("where", "how") for v in slots[slot] if ("fillable", v) in state.facts]
+    holding = [f[1] for f in state.by_predicate.get(world.liquid_fill, ()) if f[2] == liquid]
+    return next(iter(named + sorted(holding)), None)
 
 
 def fact_text(fact: Fact) -> str:
     return f"{fact[0]}({', '.join(fact[1:])})"
+
+
+def template_text(template: Template) -> str:
+    return fact_text((template[0], *template[1]))

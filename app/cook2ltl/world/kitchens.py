@@ -13,7 +13,7 @@ from cook2ltl.world.world import World
 
 def world_of(primitives: PrimitiveSet) -> World | None:
     spec = primitives.world
-    return None if spec is None else World(load_domain(spec.domain), dict(spec.states))
+    return None if spec is None else World(load_domain(spec.domain), dict(spec.states), spec.liquid_fill)
 
 
 def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: str | None = None,

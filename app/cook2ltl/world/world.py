@@ -36,6 +36,7 @@ class Step:
 class World:
     domain: Domain
     states: Mapping[str, str] = field(default_factory=dict)  # a state word → the predicate it names
+    liquid_fill: str | None = None  # fill(container, liquid): how the world tells where a liquid is (THOR)
 
     def predicate(self, word: str) -> str | None:
         """The unary predicate a state word names in this world, or None if the world cannot observe it."""
