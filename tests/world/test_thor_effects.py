@@ -1,0 +1,44 @@
+"""Intended effects in the AI2-THOR world: liquids are told by the container they fill, and the planner's kit
+covers what heats, cooks and switches."""
+
+import pytest
+
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.world.effects import intended_effect
+from tests.world.test_recipe_world import act
+
+PRIMITIVES = load_primitives("ai2thor")
+
+
+def start(scene, action):
+    from cook2ltl.world.kitchens import grounding
+
+    kitchen = grounding(PRIMITIVES, scene=scene)
+    return kitchen, kitchen.start(action.objects).state
+
+
+def test_a_liquid_in_a_container_is_the_container_filled_with_it():
+    action = act("fill", what="mug", how="water")
+    kitchen, state = start("FloorPlan21", action)
+    assert intended_effect(action, kitchen.world, state) == (("filled-with", "mug", "water"),)
+
+
+@pytest.mark.parametrize("scene, action, goal", [
+    # boiled water: a hot kettle full of water; the kettle is heated on a burner switched by its knob
+    ("FloorPlan6", act("boil", what="water", where="kettle"), (("hot", "kettle"), ("filled-with", "kettle", "water"))),
+    # toasting cooks bread, which only its slices can be: the knife comes from the kit
+    ("FloorPlan5", act("toast", what="bread"), (("cooked", "bread"),)),
+    # a burner is switched on with its knob
+    ("FloorPlan12", act("turn_on", what="stove_burner"), (("on", "stove_burner"),)),
+])
+def test_the_planner_reaches_effects_that_need_more_than_the_goals_objects(scene, action, goal):
+    kitchen, state = start(scene, action)
+    effect = intended_effect(action, kitchen.world, state)
+    assert effect == goal
+    plan = kitchen.planner.plan(kitchen.world, state, effect)
+    assert plan is not None
+    for call in plan:
+        step = kitchen.world.apply(state, call)
+        assert step.applied, (call.text(), step.problem)
+        state = step.state
+    assert all(fact in state.facts for fact in effect)
