@@ -12,8 +12,8 @@ import time
 import msgpack
 import pytest
 
-from cook2ltl.kitchen import protocol
-from cook2ltl.kitchen.player import screen_size
+from cook2ltl.kitchen import protocol, rules
+from cook2ltl.kitchen.player import _answer, screen_size
 from cook2ltl.kitchen.session import Session
 
 
@@ -83,6 +83,35 @@ def test_the_session_reports_internal_errors_as_failed_actions():
     agent = session.failure({"action": "PickupObject", "sequenceId": 4}, "internal kitchen error: boom")["agents"][0]
     assert agent["sequenceId"] == 4 and not agent["lastActionSuccess"]
     assert agent["errorMessage"] == "internal kitchen error: boom"
+
+
+def test_the_session_keeps_working_after_a_held_egg_is_not_broken():
+    session = Session()
+    session.handle({"action": "Reset", "sceneName": "FloorPlan1", "sequenceId": 0})
+    egg = _first(session, "Egg")
+    session.handle({"action": "PickupObject", "objectId": egg, "forceAction": True, "sequenceId": 1})
+    agent = session.handle({"action": "BreakObject", "objectId": egg, "sequenceId": 2})["agents"][0]
+    assert not agent["lastActionSuccess"] and "down before breaking it" in agent["errorMessage"]
+    assert agent["inventoryObjects"] == [{"objectId": egg, "objectType": "Egg"}]
+    agent = session.handle({"action": "DropHandObject", "sequenceId": 3})["agents"][0]
+    assert agent["lastActionSuccess"] and agent["inventoryObjects"] == []
+
+
+def test_a_rule_that_loses_the_held_object_fails_the_action_not_the_player(monkeypatch):
+    def vanish(state, action):  # a kitchen bug: removes what the agent holds
+        return state.evolve(objects=state.with_things(removed=(state.held,))), None
+
+    monkeypatch.setitem(rules.HANDLERS, "BreakObject", vanish)
+    session = Session()
+    session.handle({"action": "Reset", "sceneName": "FloorPlan1", "sequenceId": 0})
+    session.handle({"action": "PickupObject", "objectId": _first(session, "Apple"), "sequenceId": 1})
+    agent = _answer(session, {"action": "BreakObject", "objectId": "x", "sequenceId": 2})["agents"][0]
+    assert not agent["lastActionSuccess"] and "internal kitchen error" in agent["errorMessage"]
+    assert _answer(session, {"action": "DropHandObject", "sequenceId": 3})["agents"][0]["lastActionSuccess"]
+
+
+def _first(session: Session, object_type: str) -> str:
+    return next(o for o, t in session.state.objects.items() if t.object_type == object_type)
 
 
 def test_the_player_ends_when_its_controller_dies(tmp_path):

@@ -70,6 +70,18 @@ def test_breaking_an_egg_cracks_it(bench):
     assert cracked.can("cookable") and cracked.temperature == "Cold"
 
 
+def test_breaking_a_held_egg_is_refused_as_cutting_it_is(bench):
+    # Breaking an egg splits it: in the hand, the hand would hold the removed egg.
+    bench.hold(EGG_IN_FRIDGE)
+    bench.refuse("BreakObject", EGG_IN_FRIDGE, match=f"Put {EGG_IN_FRIDGE} down before breaking it")
+    bench.do("PutObject", "Bowl")
+    bench.do("PickupObject", "Bowl")
+    bench.refuse("BreakObject", EGG_IN_FRIDGE, match="down before breaking")  # nor in what the hand holds
+    bench.do("PutObject", "CounterTop")
+    bench.do("BreakObject", EGG_IN_FRIDGE)
+    assert bench["EggCracked"].parent == bench.id("Bowl") and bench.state.held is None
+
+
 def test_cook_object(bench):
     bench.do("CookObject", "Potato")
     assert bench["Potato"].is_cooked

@@ -291,7 +291,7 @@ class Agreement:
 
     def __init__(self, domain, kitchen) -> None:
         self.domain, self.kitchen = domain, kitchen
-        self.plans = self.lines = self.run = self.skipped = 0
+        self.plans = self.lines = self.run = 0
         self.by_primitive: Counter = Counter()
         self.became: Counter = Counter()  # what lines the kitchen ran made true, by primitive
         self.disagreements: list[dict] = []
@@ -310,10 +310,6 @@ class Agreement:
     def _line(self, scene, lines, state, binding, trail, primitive, args):
         self.lines += 1
         accepts = applicable(self.domain.schemas[primitive], args, state)
-        if primitive == "break" and ("holding", args[0]) in state.facts and ("splits", args[0]) in state.facts:
-            self.skipped += 1  # the kitchen's player dies on it (see assets/domains/ai2thor.pddl); refused here
-            assert not accepts
-            return state, trail
         before = self.kitchen.last_event.metadata["objects"]
         try:
             attempt, trail = execute(self.kitchen, Atom(primitive, args), trail)
@@ -346,8 +342,7 @@ class Agreement:
 
     def report(self, seconds: float) -> list[dict]:
         """Print the numbers and every kind of disagreement; the ones no allowance explains."""
-        print(f"\n{self.plans} plans, {self.lines} lines, {self.run} run by the kitchen, in {seconds:.1f} s"
-              f" ({self.skipped} not sent: a held egg broken)")
+        print(f"\n{self.plans} plans, {self.lines} lines, {self.run} run by the kitchen, in {seconds:.1f} s")
         print("lines run, by primitive:", dict(sorted(self.by_primitive.items())))
         print("made true:", ", ".join(f"{what} {n}" for what, n in sorted(self.became.items())))
         kinds = Counter((d["why"] or "UNEXPLAINED", d["kind"]) for d in self.disagreements)
@@ -426,9 +421,10 @@ SCRIPTS = [
      "open(microwave) pick_up(potato) put(potato,microwave) turn_on(microwave) close(microwave) turn_on(microwave) "
      "open(microwave) turn_off(microwave) open(microwave) pick_up(potato) open(fridge) put(potato,fridge)",
      {("cooked", "potato"), ("cold", "potato"), ("in", "potato", "fridge")}),
-    ("what a closed drawer holds is out of reach; a held egg is not broken",
-     "pick_up(knife) open(drawer_2) pick_up(knife) slice(tomato) drop(knife) open(fridge) pick_up(egg) break(egg)",
-     {("sliced", "tomato"), ("holding", "egg")}),
+    ("what a closed drawer holds is out of reach; an egg is not broken in hand, nor in a held bowl",
+     "pick_up(knife) open(drawer_2) pick_up(knife) slice(tomato) drop(knife) open(fridge) pick_up(egg) break(egg) "
+     "put(egg,bowl) pick_up(bowl) break(egg)",
+     {("sliced", "tomato"), ("holding", "bowl"), ("in", "egg", "bowl"), ("breakable", "egg")}),
 ]
 
 

@@ -224,7 +224,7 @@ def _toggle(state, action, on: bool):
 def slice_object(state, action):
     thing = target(state, action)
     need(thing.can("sliceable"), f"{thing.object_id} cannot be sliced")
-    need(not is_held_or_carried(state, thing.object_id), f"Put {thing.object_id} down before slicing it")
+    _put_down_first(state, thing, "slicing")
     reachable(state, thing, action)
     if state.slice_needs_knife:
         tools = " or ".join(sorted(state.types.cutting_tools))
@@ -242,9 +242,17 @@ def break_object(state, action):
     need(not thing.is_broken, f"{thing.object_id} is already broken")
     reachable(state, thing, action)
     if thing.object_type in state.types.slicing:
-        return _split(state, thing)  # an egg breaks into a cracked egg, as when cut
+        # An egg breaks into a cracked egg, as when cut: so, as for cutting, not in the hand.
+        _put_down_first(state, thing, "breaking")
+        return _split(state, thing)
     broken = replace(thing, is_broken=True, is_filled=False, fill_liquid=None)
     return _changed(state, broken), None
+
+
+def _put_down_first(state, thing: Thing, doing: str) -> None:
+    """Splitting (cutting, cracking an egg) happens where the thing lies: not in the hand, nor in what the
+    hand holds. It also keeps `held` naming an object, as splitting removes the thing."""
+    need(not is_held_or_carried(state, thing.object_id), f"Put {thing.object_id} down before {doing} it")
 
 
 def _split(state, thing: Thing):

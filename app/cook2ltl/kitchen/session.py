@@ -41,8 +41,10 @@ class Session:
                 result = rules.apply(self.state, action)
         except Refused as refusal:
             result = rules.Result(self.state, False, refusal.message, None, refusal.code)
+        answer = self._envelope(action, result)
+        # Kept only once it reads back: if not, the player reports the failure on the old state and lives.
         self.state = result.state
-        return self._envelope(action, result)
+        return answer
 
     def failure(self, action: dict[str, Any], message: str) -> dict[str, Any]:
         """A failed answer to `action` that leaves the kitchen as it was."""

@@ -106,6 +106,9 @@ class KitchenState:
         # Freeze the mapping so a state can be shared without defensive copies.
         if not isinstance(self.objects, MappingProxyType):
             object.__setattr__(self, "objects", MappingProxyType(dict(self.objects)))
+        # A rule that removes the held object is a kitchen bug: fail the action, not the metadata after it.
+        if self.held is not None and self.held not in self.objects:
+            raise ValueError(f"the agent would hold {self.held}, which is no longer in {self.scene}")
 
     def thing(self, object_id: str) -> Thing | None:
         return self.objects.get(object_id)
