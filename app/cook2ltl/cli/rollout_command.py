@@ -1,5 +1,6 @@
 """`cook2ltl rollout`: a task planned by Algorithm 1, or a formula, executed in a kitchen through ai2thor's
-Controller, with what is satisfied and what remains after every action, the verdict and the task's goal."""
+Controller, with what is satisfied and what remains after every action, the verdict and the task's goal; or a
+recipe file, translated and rolled out in the world model (cli/recipe_rollout.py)."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import typer
 from rich.console import Console
 from rich.text import Text
 
+from cook2ltl.cli.recipe_rollout import is_recipe, rollout_recipe
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline import Variant
 from cook2ltl.reduce.llm import DEFAULT_MODEL
@@ -28,8 +30,9 @@ class Backend(StrEnum):
 
 
 def rollout_command(
-    target: Optional[str] = typer.Argument(None, metavar="TASK|FORMULA", show_default=False,
-                                           help="A task's id or instruction (see --list), or an LTL formula."),
+    target: Optional[str] = typer.Argument(None, metavar="TASK|FORMULA|RECIPE-FILE", show_default=False,
+                                           help="A task's id or instruction (see --list), an LTL formula, or a "
+                                                "recipe file (- for standard input)."),
     scene: Optional[str] = typer.Option(None, "--scene", help="FloorPlan1 … FloorPlan30 (default: the task's own, "
                                         f"else {DEFAULT_SCENE})."),
     backend: Backend = typer.Option(Backend.EMBEDDED, "--backend", case_sensitive=False,
@@ -41,19 +44,24 @@ def rollout_command(
                                            " else library.sqlite in the user data folder)."),
     variant: Variant = typer.Option(Variant.AR_LIBRARY, "--variant", case_sensitive=False,
                                     help="AR passes primitives through; AR+A also reuses and grows the library."),
-    validate: bool = typer.Option(True, "--validate/--no-validate", help="AR+A: check a new reduction in a kitchen "
-                                  "of its own before it is cached, as `translate` does."),
+    validate: Optional[bool] = typer.Option(None, "--validate/--no-validate", help="AR+A: check a new reduction in "
+                                            "a kitchen of its own before it is cached, as `translate` does (default: "
+                                            "on for a task; for a recipe, as `translate`)."),
     ground: bool = typer.Option(True, "--ground/--no-ground",
                                 help="Check and complete the plan in the world model of the kitchen it runs in."),
     repairs: Optional[int] = typer.Option(None, "--repairs", min=0, max=10, show_default=False,
                                           help="Times a plan the check refuses goes back to the model (default: "
                                                "the settings' [translate] repairs, else 2)."),
+    primitives: Optional[str] = typer.Option(None, "--primitives", help="A recipe's primitive set: recipe (default), "
+                                             "ai2thor, or a TOML file of your robot's set."),
     list_tasks: bool = typer.Option(False, "--list", help="List the tasks and exit."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
-    """Execute a task or formula in an AI2-THOR kitchen and follow the formula's progress action by action.
+    """Execute a task or formula in an AI2-THOR kitchen, or a recipe in the world model, and follow the formula's
+    progress action by action.
 
-    Exits with 0 when the task's goal holds at the end (for a formula: when the formula does), else 1.
+    Exits with 0 when the task's goal holds at the end (for a formula: when the formula does; for a recipe: when
+    every step reached its effects and the formula holds), else 1.
     """
     from cook2ltl.kitchen.launcher import start_kitchen
     from cook2ltl.kitchen.planning import open_planner
@@ -64,7 +72,16 @@ def rollout_command(
         show_tasks(Console(), as_json)
         return
     if target is None:
-        raise UserError("No task or formula given.", "name a task (cook2ltl rollout --list) or write a formula.")
+        raise UserError("No task, formula or recipe given.",
+                        "name a task (cook2ltl rollout --list), write a formula, or give a recipe file.")
+    if is_recipe(target):
+        if reference or scene:
+            raise UserError("--reference and --scene are for kitchen tasks; a recipe runs in the world model.",
+                            "drop them, or name a task (cook2ltl rollout --list).")
+        rollout_recipe(target, primitives or "recipe", model, library, variant, validate, repairs, ground, as_json)
+    if primitives is not None:
+        raise UserError("--primitives is for a recipe file; a task or formula uses the ai2thor primitives.",
+                        "drop --primitives, or give a recipe file.")
     task, formula = read_target(target, reference)
     if repairs is None:
         repairs = load_settings().translate.repairs
@@ -76,7 +93,7 @@ def rollout_command(
         plan = None
         if formula is None:
             with errors.status(f"planning “{task.instruction}” with {model} …"), \
-                    open_planner(model, library, variant, validate, repairs, ground) as planner:
+                    open_planner(model, library, variant, validate is not False, repairs, ground) as planner:
                 plan = planner.plan(task.instruction, scene)
             formula = plan.formula
         console = None if as_json else Console()

@@ -8,11 +8,10 @@ from typing import Optional
 
 import typer
 from rich.console import Console
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from cook2ltl.cli.inputs import read_recipe
-from cook2ltl.pipeline import ActionDone, Finished, Started, Translation, Variant, rates
+from cook2ltl.pipeline import Translation, Variant, rates
 from cook2ltl.reduce.llm import DEFAULT_MODEL
 from cook2ltl.reduce.model import Source
 
@@ -47,37 +46,18 @@ def translate_command(
                                         "and the plan as PDDL into this folder."),
 ) -> None:
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
-    from cook2ltl import paths
-    from cook2ltl.library import Library
-    from cook2ltl.pipeline import Translator, run
-    from cook2ltl.reduce.llm import load_model
+    from cook2ltl.cli.translating import open_translator, translated
     from cook2ltl.reduce.primitives import load_primitives
     from cook2ltl.reduce.reduction import ReductionSettings
-    from cook2ltl.settings import load_settings
-    from cook2ltl.stack import dependency_parser, span_extractor
     from cook2ltl.translate.serialize import translation_json
 
     text = read_recipe(recipe)
-    settings = load_settings()
-    chosen = load_primitives(primitives)
-    language_model = load_model(model)
     errors = Console(stderr=True)
-    grounding = _grounding(chosen, ground)
-    validator = _validator(chosen, validate, variant, errors, grounding is not None)
-    store = Library(library or paths.library_file()) if variant == Variant.AR_LIBRARY else None
-    translator = Translator(chosen, language_model, store, variant, ReductionSettings(max_lines, comments),
-                            validator, settings.translate.repairs if repairs is None else repairs, approved_only,
-                            grounding)
-    try:
-        events = run(text, span_extractor(settings), dependency_parser(), translator)
-        translation = _follow(events, errors)
-    finally:
-        if store is not None:
-            store.close()
-        if validator is not None:
-            validator.close()
+    with open_translator(load_primitives(primitives), model, library, variant, ReductionSettings(max_lines, comments),
+                         validate, repairs, approved_only, ground, errors) as translator:
+        translation = translated(text, translator, errors)
     if pddl is not None:
-        _export(translation, grounding, pddl, errors)
+        _export(translation, translator.grounding, pddl, errors)
     if as_json:
         typer.echo(json.dumps(with_validation(translation_json(translation), translation), ensure_ascii=False,
                               indent=2))
@@ -98,30 +78,6 @@ def _export(translation: Translation, grounding, folder: Path, errors: Console) 
         errors.print(f"wrote {path}")
 
 
-def _grounding(primitives, ground: bool):
-    """The set's world model with the planner, or None: turned off, or the set names no world."""
-    from cook2ltl.world.kitchens import grounding
-
-    return grounding(primitives) if ground else None
-
-
-def _validator(primitives, validate: bool | None, variant: Variant, errors: Console, grounded: bool = False):
-    """The kitchen validator, or None: not asked for, or by default with a primitive set it cannot run (asked
-    for explicitly, that is an error). A set whose world has its own kitchen file is judged there, not by
-    THOR stand-ins, unless asked for."""
-    from cook2ltl.reduce.validation import KitchenValidator, unsupported
-
-    if validate is False or (validate is None and variant != Variant.AR_LIBRARY):
-        return None
-    if validate is None and grounded and primitives.world.kitchen is not None:
-        return None
-    missing = unsupported(primitives)
-    if missing and validate is None:
-        errors.print(f"[yellow]not validating: the kitchen has no action for {', '.join(missing)}[/yellow]")
-        return None
-    return KitchenValidator(primitives)
-
-
 def with_validation(data: dict, translation: Translation) -> dict:
     """The translation's JSON with each new reduction's kitchen check and the two rates in the stats."""
     results = [result for step in translation.steps for result in step.actions]
@@ -138,23 +94,6 @@ def with_validation(data: dict, translation: Translation) -> dict:
     data["stats"] |= {"executability": counts.executability, "validated_rate": counts.validated_rate,
                       "written_lines": counts.written_lines, "admissible_lines": counts.admissible_lines}
     return data
-
-
-def _follow(events, console: Console) -> Translation:
-    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
-    # Off a terminal the bar draws nothing, not even the blank line a transient bar leaves before an error.
-    with Progress(*columns, console=console, transient=True, disable=not console.is_terminal) as progress:
-        task = progress.add_task("parsing", total=None)
-        for event in events:
-            if isinstance(event, Started):
-                progress.update(task, total=event.actions, description="reducing")
-            elif isinstance(event, ActionDone):
-                reduction = event.result.reduction
-                progress.update(task, completed=event.done,
-                                description=f"{reduction.action.text()} [dim]({reduction.source.value})[/dim]")
-            elif isinstance(event, Finished):
-                return event.translation
-    raise typer.Exit(130)  # stopped before the end
 
 
 def show(translation: Translation, console: Console) -> None:

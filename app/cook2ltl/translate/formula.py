@@ -36,11 +36,18 @@ def condition_atom(subject: str, state: str) -> Atom:
     return Atom(ELAPSED, (state,)) if subject == TIMER else Atom(state, (subject,))
 
 
+def call_atom(call: Call, primitives: PrimitiveSet) -> Formula:
+    """A plan line's action in a formula: a wait is the bare `wait` atom (its condition is the Until's goal),
+    ⊤ when the set has no wait to hold."""
+    if call.is_wait:
+        return Atom(WAIT) if primitives.get(WAIT) else TRUE
+    return Atom(call.name, call.args)
+
+
 def plan_element(calls: tuple[Call, ...], primitives: PrimitiveSet) -> Element:
     """The primitive calls of a plan, in order; each wait becomes an Until inside the sequence."""
-    hold = Atom(WAIT) if primitives.get(WAIT) else TRUE
-    elements = [hold_until(hold, condition_atom(*call.args)) if call.is_wait else Atom(call.name, call.args)
-                for call in calls]
+    elements = [hold_until(call_atom(call, primitives), condition_atom(*call.args)) if call.is_wait
+                else call_atom(call, primitives) for call in calls]
     return elements[0] if len(elements) == 1 else then(*elements)
 
 

@@ -61,12 +61,13 @@ class Cook2LTLApp(App):
         self.recipe_path = recipe_path
         self.model_name = services.model_names[0]  # chosen on Translate, used by Rollout's planning too
         self.translation: Translation | None = None  # the last one finished, for the Rollout screen
+        self.translation_primitives = ""  # the primitive set it was made with (recipe, ai2thor or a file)
 
     def on_mount(self) -> None:
         self.set_keymap(self.keymap)
 
     def on_translation_done(self, message: TranslationDone) -> None:
-        self.translation = message.translation
+        self.translation, self.translation_primitives = message.translation, message.primitives
 
     def action_help(self) -> None:
         if isinstance(self.screen, HelpScreen):

@@ -1,4 +1,5 @@
-"""The core's generators (`pipeline.run`, `kitchen.trial.run_trial`) as streams of typed messages.
+"""The core's generators (`pipeline.run`, `kitchen.trial.run_trial`, `translate.world_rollout.roll_out_recipe`)
+as streams of typed messages.
 
 A worker only forwards what these yield, so the translating and rolling out are testable without a screen;
 cancellation reaches the core as the same `threading.Event` the core takes.
@@ -15,14 +16,16 @@ from textual.message import Message
 
 from cook2ltl.settings import TranslateSettings
 from cook2ltl.ui.messages import (
-    ActionReduced, ObjectState, RecipeParsed, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped,
-    StepTranslated, TranslationDone, WorkNotice, WorkProgress, WorkStopped,
+    ActionReduced, ObjectState, RecipeActionRolled, RecipeParsed, RecipeRolloutBegan, RecipeRolloutDone,
+    RecipeStepRolled, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped, StepTranslated, TranslationDone,
+    WorkNotice, WorkProgress, WorkStopped,
 )
 from cook2ltl.ui.services import Services
 
 if TYPE_CHECKING:
     from cook2ltl.kitchen.tasks import Task
     from cook2ltl.ltl.ast import Formula
+    from cook2ltl.pipeline import Translation
 
 
 @dataclass(frozen=True)
@@ -44,6 +47,16 @@ class RolloutRequest:
     formula: Formula | None = None  # None: plan the task's instruction with Algorithm 1 first
     model: str = ""
     repairs: int = TranslateSettings.repairs  # as TranslateRequest's, when the instruction is planned
+
+
+@dataclass(frozen=True)
+class RecipeRolloutRequest:
+    """A recipe rolled out in the world model: a finished translation as it is, else `translate` run first."""
+
+    title: str
+    primitives: str  # the set the translation is (or will be) made with: recipe, ai2thor, or a TOML file
+    translation: Translation | None = None
+    translate: TranslateRequest | None = None
 
 
 def translation_feed(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
@@ -97,7 +110,7 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
         elif isinstance(event, StepDone):
             yield StepTranslated(event.result)
         elif isinstance(event, Finished):
-            yield TranslationDone(event.translation)
+            yield TranslationDone(event.translation, request.primitives)
             return
     yield WorkStopped()
 
@@ -134,6 +147,36 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
                 yield RolloutRefused(event.attempt)
             elif isinstance(event, TrialDone):
                 yield RolloutDone(event.trial)
+
+
+def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cancel: threading.Event
+                        ) -> Iterator[Message]:
+    from cook2ltl.reduce.primitives import load_primitives
+    from cook2ltl.translate.world_rollout import ActionRolled, Began, Finished, StepRolled, roll_out_recipe
+
+    translation = request.translation
+    if translation is None:
+        for message in translation_feed(services, request.translate, cancel):
+            if isinstance(message, TranslationDone):
+                translation = message.translation
+            if isinstance(message, (WorkProgress, WorkNotice, WorkStopped, TranslationDone)):  # not the steps
+                yield message
+        if translation is None:
+            return  # stopped: translation_feed said so
+    total = 0
+    for event in roll_out_recipe(translation, load_primitives(request.primitives), cancel=cancel):
+        if isinstance(event, Began):
+            total = event.actions
+            yield RecipeRolloutBegan(event, request.title)
+        elif isinstance(event, ActionRolled):
+            yield RecipeActionRolled(event)
+            yield WorkProgress(f"rolling out {event.run.result.reduction.action.text()}", event.done, total)
+        elif isinstance(event, StepRolled):
+            yield RecipeStepRolled(event.run)
+        elif isinstance(event, Finished):
+            yield RecipeRolloutDone(event.rollout)
+            return
+    yield WorkStopped()
 
 
 def _planner(services: Services, request: RolloutRequest, cancel: threading.Event):

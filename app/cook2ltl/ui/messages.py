@@ -25,6 +25,7 @@ if TYPE_CHECKING:
     from cook2ltl.pipeline import ActionDone, StepResult, Translation
     from cook2ltl.reduce.model import PrimitiveSet
     from cook2ltl.reduce.reduction import LibraryVerb
+    from cook2ltl.translate.world_rollout import ActionRolled, Began, RecipeRollout, StepRun
 
 
 class ScreenMessage(Message):
@@ -74,11 +75,12 @@ class StepTranslated(ScreenMessage):
 
 
 class TranslationDone(Message):
-    """Bubbles to the app, which keeps the translation for the Rollout screen."""
+    """Bubbles to the app, which keeps the translation for the Rollout screen, with the primitive set it was
+    made with (recipe, ai2thor or a file: what its world model is read from)."""
 
-    def __init__(self, translation: Translation) -> None:
+    def __init__(self, translation: Translation, primitives: str = "") -> None:
         super().__init__()
-        self.translation = translation
+        self.translation, self.primitives = translation, primitives
 
 
 # --- library ---------------------------------------------------------------------------------------------
@@ -148,3 +150,31 @@ class RolloutDone(ScreenMessage):
     def __init__(self, trial: Trial) -> None:
         super().__init__()
         self.trial = trial
+
+
+# --- a recipe rolled out in the world model -------------------------------------------------------------
+
+class RecipeRolloutBegan(ScreenMessage):
+    def __init__(self, began: Began, title: str) -> None:
+        super().__init__()
+        self.began, self.title = began, title
+
+
+class RecipeActionRolled(ScreenMessage):
+    """An action's plan lines applied (or refused) where the recipe has got to."""
+
+    def __init__(self, rolled: ActionRolled) -> None:
+        super().__init__()
+        self.rolled = rolled
+
+
+class RecipeStepRolled(ScreenMessage):
+    def __init__(self, run: StepRun) -> None:
+        super().__init__()
+        self.run = run
+
+
+class RecipeRolloutDone(ScreenMessage):
+    def __init__(self, rollout: RecipeRollout) -> None:
+        super().__init__()
+        self.rollout = rollout

@@ -1,10 +1,12 @@
 """The Rollout screen: a kitchen task (planned by Algorithm 1, or its reference plan), the current recipe's
 formulas, or a formula typed in, executed headless in a kitchen; the action log, the objects it touched,
-and the formula's progress after every action, then the verdict."""
+and the formula's progress after every action, then the verdict. A recipe (the current translation, or a file
+opened here and translated) also runs in the world model, step after step in one state, line by line."""
 
 from __future__ import annotations
 
 import threading
+from pathlib import Path
 
 from rich.text import Text
 from textual import work
@@ -15,9 +17,15 @@ from textual.content import Content
 from textual.widgets import Button, Checkbox, DataTable, Footer, Header, Input, Select
 
 from cook2ltl.errors import UserError
-from cook2ltl.ui.feeds import RolloutRequest, rollout_feed
-from cook2ltl.ui.messages import RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped
+from cook2ltl.ui.feeds import (
+    RecipeRolloutRequest, RolloutRequest, TranslateRequest, recipe_rollout_feed, rollout_feed,
+)
+from cook2ltl.ui.messages import (
+    RecipeActionRolled, RecipeRolloutBegan, RecipeRolloutDone, RecipeStepRolled, RolloutBegan, RolloutDone,
+    RolloutRefused, RolloutStepped,
+)
 from cook2ltl.ui.screens.base import WorkScreen
+from cook2ltl.ui.screens.dialogs import PathDialog
 from cook2ltl.ui.widgets.progress_view import FormulaProgress, verdict_content
 from cook2ltl.ui.widgets.status import WorkStatus
 
@@ -25,12 +33,21 @@ DEFAULT_SCENE = "FloorPlan1"
 # (name, width): Textual content cells are not measured by the table, so theirs are fixed.
 LOG_COLUMNS = (("#", None), ("", 1), ("action", None), ("verdict", 16), ("holds after · or why refused", None))
 FORMULA = "formula"  # the target typed in the formula field
+WORLD = "world"  # the current translation in the world model
+FILE = "file"  # the recipe file opened here, translated then rolled out in the world model
 
 
 class RolloutScreen(WorkScreen):
     JOB = "rollout"
-    BINDINGS = [Binding("ctrl+r", "run", "Run", id="rollout.run")]
-    PALETTE = (("Rollout: run", "Execute the chosen task or formula in the kitchen", "run"),)
+    BINDINGS = [Binding("ctrl+r", "run", "Run", id="rollout.run"),
+                Binding("ctrl+o", "open", "Recipe file", id="rollout.open")]
+    PALETTE = (("Rollout: run", "Execute the chosen task or formula in the kitchen", "run"),
+               ("Rollout: a recipe file in the world model", "Translate a recipe file, then run it step after step "
+                "in the world model", "open"))
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.recipe_file: Path | None = None  # opened with ctrl+o
 
     def compose(self) -> ComposeResult:
         from cook2ltl.kitchen.scenes import scene_names
@@ -62,6 +79,9 @@ class RolloutScreen(WorkScreen):
 
     def on_screen_resume(self) -> None:
         """The current recipe's formulas appear once a translation has finished."""
+        self._refresh_targets()
+
+    def _refresh_targets(self) -> None:
         target = self.query_one("#target", Select)
         choice = target.value
         targets = self._targets()
@@ -73,10 +93,14 @@ class RolloutScreen(WorkScreen):
 
         targets = [(f"task {t.id}: {t.instruction}", f"task:{t.id}") for t in load_tasks()]
         translation = self.app.translation
+        if translation is not None and translation.world_start is not None:
+            targets.append((f"recipe in the world model, line by line ({len(translation.steps)} steps)", WORLD))
         if translation is not None:
             targets.append((f"recipe: every step ({len(translation.steps)})", "recipe"))
             targets += [(f"recipe step {s.step.index + 1}: {s.step.sentence.text}", f"recipe:{i}")
                         for i, s in enumerate(translation.steps)]
+        if self.recipe_file is not None:
+            targets.append((f"recipe file {self.recipe_file.name} in the world model", FILE))
         targets.append(("the formula typed below", FORMULA))
         return [(_short(label), value) for label, value in targets]
 
@@ -107,9 +131,25 @@ class RolloutScreen(WorkScreen):
             table.clear()
         self.query_one(FormulaProgress).update("")
         self.query_one("#run-rollout", Button).disabled = True
-        self.roll_out(request, self.begin("starting …"))
+        if isinstance(request, RecipeRolloutRequest):
+            self.roll_out_recipe(request, self.begin("starting …"))
+        else:
+            self.roll_out(request, self.begin("starting …"))
 
-    def request(self) -> RolloutRequest:
+    def action_open(self) -> None:
+        if not self.busy:
+            self.app.push_screen(PathDialog("A recipe file to run in the world model", f"{Path.cwd()}/", "Run"),
+                                 self._open)
+
+    def _open(self, path: Path | None) -> None:
+        if path is None:
+            return
+        self.recipe_file = path
+        self._refresh_targets()
+        self.query_one("#target", Select).value = FILE
+        self.action_run()
+
+    def request(self) -> RolloutRequest | RecipeRolloutRequest:
         """The chosen target as a request; UserError for what cannot run."""
         from cook2ltl.kitchen.tasks import find_task, reference_formula
 
@@ -120,9 +160,26 @@ class RolloutScreen(WorkScreen):
             formula = reference_formula(task) if self.query_one("#reference", Checkbox).value else None
             return RolloutRequest(scene or task.scene, task, formula, self.app.model_name,
                                   self.app.translate_settings.repairs)
+        if target == WORLD:
+            translation = self.app.translation
+            return RecipeRolloutRequest("the recipe", self.app.translation_primitives or translation.primitives,
+                                        translation)
+        if target == FILE:
+            return self._file_request()
         if target.startswith("recipe"):
             return RolloutRequest(scene or DEFAULT_SCENE, formula=self._recipe_formula(target))
         return RolloutRequest(scene or DEFAULT_SCENE, formula=self._typed_formula())
+
+    def _file_request(self) -> RecipeRolloutRequest:
+        """The opened file translated with the recipe primitives and the world model, as `cook2ltl rollout
+        RECIPE-FILE` does; UserError for a file that is no recipe."""
+        from cook2ltl.cli.inputs import read_recipe
+
+        text = read_recipe(str(self.recipe_file))
+        settings = self.app.translate_settings
+        translate = TranslateRequest(text, "recipe", "AR+A", self.app.model_name, repairs=settings.repairs,
+                                     ground=True)
+        return RecipeRolloutRequest(self.recipe_file.name, "recipe", translate=translate)
 
     def _recipe_formula(self, target: str):
         translation = self.app.translation
@@ -150,6 +207,11 @@ class RolloutScreen(WorkScreen):
     @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
     def roll_out(self, request: RolloutRequest, cancel: threading.Event) -> None:
         for message in rollout_feed(self.app.services, request, cancel):
+            self.post_message(message)
+
+    @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
+    def roll_out_recipe(self, request: RecipeRolloutRequest, cancel: threading.Event) -> None:
+        for message in recipe_rollout_feed(self.app.services, request, cancel):
             self.post_message(message)
 
     def work_ended(self) -> None:
@@ -184,6 +246,48 @@ class RolloutScreen(WorkScreen):
         goal = "" if trial.goal is None else f", the task's goal {'holds' if trial.goal.met else 'does not hold'}"
         verdict = trial.rollout.verdict.value.replace("_", " ")
         self.query_one(WorkStatus).show(f"{'success' if trial.success else 'failure'}: the formula is {verdict}{goal}")
+
+
+    def on_recipe_rollout_began(self, message: RecipeRolloutBegan) -> None:
+        self.query_one(FormulaProgress).begin_recipe(message)
+
+    def on_recipe_action_rolled(self, message: RecipeActionRolled) -> None:
+        """The step's sentence before its first action, the action with its effect, then one row a line."""
+        from cook2ltl.world.effects import fact_text
+
+        run, step = message.rolled.run, message.rolled.step
+        log = self.query_one("#log", DataTable)
+        number = step.step.index + 1
+        if run.result is step.actions[0]:
+            log.add_row(str(number), "", Text(step.step.sentence.text, style="bold"), "", "")
+        check = run.result.check
+        effect = ", ".join(fact_text(f) for f in check.effect) if check is not None else ""
+        outcome = "avoided: not run" if run.avoided else \
+            f"effect {effect or '—'}: {'reached' if run.reached else 'not reached'}"
+        log.add_row("", "", Text(f"→ {run.result.reduction.action.text()}"), "", Text(outcome))
+        for index, line in enumerate(run.lines, 1):
+            mark = Content("✓").stylize("$text-success") if line.applied else Content("✗").stylize("$text-error")
+            changes = [f"+{fact_text(f)}" for f in line.added] + [f"−{fact_text(f)}" for f in line.removed]
+            log.add_row(f"{number}.{index}", mark, Text(f"{line.call.text()} · {line.written_by or '?'}"),
+                        verdict_content(line.verdict.value) if line.applied else Content("refused"),
+                        Text(" ".join(changes) if line.applied else line.problem))
+            if line.applied:
+                self.query_one(FormulaProgress).step(line)
+        log.move_cursor(row=log.row_count - 1)
+
+    def on_recipe_step_rolled(self, message: RecipeStepRolled) -> None:
+        log = self.query_one("#log", DataTable)
+        for problem in message.run.problems:
+            log.add_row("", Content("!").stylize("$text-error"), Text("problem"), "", Text(problem))
+        log.move_cursor(row=log.row_count - 1)
+
+    def on_recipe_rollout_done(self, message: RecipeRolloutDone) -> None:
+        rollout = message.rollout
+        self.query_one(FormulaProgress).finish_recipe(rollout)
+        verdict = rollout.verdict.value.replace("_", " ")
+        reached = sum(1 for step in rollout.steps if step.reached)
+        self.query_one(WorkStatus).show(f"{'success' if rollout.success else 'failure'}: the formula is {verdict}, "
+                                        f"{reached} of {len(rollout.steps)} steps reached their effects")
 
 
 def _short(label: str, width: int = 46) -> str:

@@ -1,5 +1,6 @@
 """A formula's progress during a rollout: the formula with the atoms met so far marked, what remains, the
-verdict after each action, and at the end why it stopped and whether the task's goal holds."""
+verdict after each action, and at the end why it stopped and whether the task's goal holds (for a recipe in the
+world model: its problems by step)."""
 
 from __future__ import annotations
 
@@ -13,7 +14,8 @@ if TYPE_CHECKING:
     from cook2ltl.kitchen.rollout import TraceStep
     from cook2ltl.kitchen.trial import Trial
     from cook2ltl.ltl.ast import Atom, Formula
-    from cook2ltl.ui.messages import RolloutBegan
+    from cook2ltl.translate.world_rollout import LineRun, RecipeRollout
+    from cook2ltl.ui.messages import RecipeRolloutBegan, RolloutBegan
 
 VERDICT_STYLE = {"satisfied": "bold $text-success", "presumably_true": "$text-success",
                  "presumably_false": "$text-warning", "violated": "bold $text-error"}
@@ -59,7 +61,19 @@ class FormulaProgress(Static):
         self.formula = began.formula
         self._draw(frozenset(), began.formula, "presumably_false")
 
-    def step(self, step: TraceStep) -> None:
+    def begin_recipe(self, began: RecipeRolloutBegan) -> None:
+        core = began.began
+        self.header = [Content(f"{began.title} · {core.steps} steps, {core.actions} actions · the world model"
+                               ).stylize("bold")]
+        if core.unobservable:
+            never = ", ".join(atom.text for atom in core.unobservable)
+            self.header.append(Content(f"the world cannot tell {never}: true only once waited for"
+                                       ).stylize("$text-warning"))
+        self.formula = core.formula
+        self._draw(frozenset(), core.formula, "presumably_false")
+
+    def step(self, step: TraceStep | LineRun) -> None:
+        """After a kitchen action, or a plan line applied in the world model."""
         self._draw(step.met, step.remaining, step.verdict.value)
 
     def finish(self, trial: Trial) -> None:
@@ -79,6 +93,19 @@ class FormulaProgress(Static):
                                        f"{planning}").stylize("$text-muted"))
         remaining = result.steps[-1].remaining if result.steps else result.formula
         self._draw(met, remaining, result.verdict.value, lines)
+
+    def finish_recipe(self, rollout: RecipeRollout) -> None:
+        lines = [_label("verdict") + verdict_content(rollout.verdict.value)]
+        for step in rollout.steps:
+            for problem in step.problems:
+                lines.append(_label(f"step {step.result.step.index + 1}") + Content("! ").stylize("$text-error")
+                             + Content(problem))
+        reached = sum(1 for step in rollout.steps if step.reached)
+        outcome = Content("success").stylize("bold $text-success") if rollout.success else \
+            Content("failure").stylize("bold $text-error")
+        lines.append(outcome + Content(f" · {reached} of {len(rollout.steps)} steps reached their effects"
+                                       ).stylize("$text-muted"))
+        self._draw(rollout.met, rollout.remaining, rollout.verdict.value, lines)
 
     def _draw(self, met: frozenset[Atom], remaining: Formula, verdict: str, tail: list[Content] = ()) -> None:
         from cook2ltl.ltl.printer import to_unicode

@@ -1,0 +1,145 @@
+"""`cook2ltl rollout RECIPE-FILE`: the recipe translated, then rolled out in the world model step after step in
+one state, with each plan line applied or refused, who wrote it, what changed, and the formula's progress."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import NoReturn
+
+import typer
+from rich.console import Console
+from rich.text import Text
+
+from cook2ltl.errors import UserError
+from cook2ltl.pipeline import Variant
+
+VERDICT_STYLE = {"satisfied": "bold green", "presumably_true": "green", "presumably_false": "yellow",
+                 "violated": "bold red"}
+WRITER_STYLE = {"model": "magenta", "library": "cyan", "recipe": "green", "planner": "blue"}
+
+
+def is_recipe(target: str) -> bool:
+    """A rollout target is a recipe when it names a file (or is -, standard input)."""
+    return target == "-" or Path(target).is_file()
+
+
+def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | None, variant: Variant,
+                   validate: bool | None, repairs: int | None, ground: bool, as_json: bool) -> NoReturn:
+    """Translate the recipe with the world model on, roll it out, and exit 0 when every step reached its
+    actions' effects and the formula holds, else 1."""
+    from cook2ltl.cli.inputs import read_recipe
+    from cook2ltl.cli.translating import open_translator, translated
+    from cook2ltl.reduce.primitives import load_primitives
+    from cook2ltl.reduce.reduction import ReductionSettings
+    from cook2ltl.translate.world_rollout import (
+        NO_WORLD_HINT, ActionRolled, Began, Finished, StepRolled, recipe_rollout_json, roll_out_recipe,
+    )
+
+    if not ground:
+        raise UserError("A recipe rollout runs the recipe in the world model; --no-ground turns it off.",
+                        "drop --no-ground (to run a formula in the THOR kitchen instead, give the formula).")
+    text = read_recipe(recipe)
+    chosen = load_primitives(primitives)
+    if chosen.world is None:
+        raise UserError(f"The {chosen.name} primitive set names no world model.", NO_WORLD_HINT)
+    errors = Console(stderr=True)
+    with open_translator(chosen, model, library, variant, ReductionSettings(), validate, repairs, False, True,
+                         errors) as translator:
+        translation = translated(text, translator, errors)
+    console = None if as_json else Console()
+    rollout = None
+    for event in roll_out_recipe(translation, chosen, translator.grounding.world):
+        if isinstance(event, Finished):
+            rollout = event.rollout
+        elif console is None:
+            continue
+        elif isinstance(event, Began):
+            show_began(console, event, recipe, translation)
+        elif isinstance(event, ActionRolled):
+            show_action(console, event)
+        elif isinstance(event, StepRolled):
+            show_step_end(console, event.run)
+    if as_json:
+        typer.echo(json.dumps(recipe_rollout_json(rollout), ensure_ascii=False, indent=2))
+    else:
+        show_outcome(console, rollout)
+    raise typer.Exit(0 if rollout.success else 1)
+
+
+def show_began(console: Console, began, recipe: str, translation) -> None:
+    from cook2ltl.ltl.printer import to_unicode
+
+    name = "standard input" if recipe == "-" else Path(recipe).name
+    console.print(f"[bold]{name}[/bold] [dim]· {translation.primitives} primitives · {began.steps} steps, "
+                  f"{began.actions} actions · the world model[/dim]", highlight=False)
+    console.print(Text("φ  ", style="dim") + Text(to_unicode(began.formula), style="yellow"), soft_wrap=True)
+    if began.unobservable:
+        never = ", ".join(atom.text for atom in began.unobservable)
+        console.print(f"[yellow]the world cannot tell {never}: true only once waited for[/yellow]", highlight=False)
+
+
+def show_action(console: Console, rolled) -> None:
+    """An action as it is rolled out: its lines (✓ applied, ✗ refused), who wrote each, what changed, and the
+    recipe formula's progress after it."""
+    from cook2ltl.ltl.printer import to_unicode
+    from cook2ltl.world.effects import fact_text
+
+    run, step = rolled.run, rolled.step
+    if run.result is step.actions[0]:
+        _step_title(console, step)
+    head = Text("     → ") + Text(run.result.reduction.action.text(), style="bold")
+    if run.avoided:
+        console.print(head + Text("   avoided: the recipe says not to (not run)", style="dim"))
+        return
+    check = run.result.check
+    if check is not None and check.effect:
+        mark = Text(" ✓", style="green") if not run.missing else Text(" ✗", style="bold red")
+        head += Text("   effect ", style="dim") + Text(", ".join(fact_text(f) for f in check.effect)) + mark
+    console.print(head)
+    if not run.lines:
+        console.print(Text("         (no plan)", style="bold red"))
+    for line in run.lines:
+        mark = Text("✓ ", style="green") if line.applied else Text("✗ ", style="bold red")
+        row = Text("       ") + mark + Text(f"{line.call.text():<28}") + Text(
+            f" {line.written_by:<8}", style=WRITER_STYLE.get(line.written_by, "dim"))
+        if not line.applied:
+            row += Text(f" {line.problem}", style="red")
+        else:
+            changes = [f"+{fact_text(f)}" for f in line.added] + [f"−{fact_text(f)}" for f in line.removed]
+            row += Text(" " + " ".join(changes), style="cyan")
+        console.print(row, overflow="ellipsis", no_wrap=True)
+    last = run.lines[-1] if run.lines else None
+    if last is not None:
+        console.print(Text("         remaining ", style="dim") + Text(to_unicode(last.remaining)) + Text(
+            f"   {last.verdict.value.replace('_', ' ')}", style=VERDICT_STYLE[last.verdict.value]),
+            overflow="ellipsis", no_wrap=True)
+
+
+def show_step_end(console: Console, step) -> None:
+    if not step.actions:  # a step without actions had no title yet
+        _step_title(console, step.result)
+    for problem in step.problems:
+        console.print(f"     [bold red]![/bold red] {problem}", highlight=False)
+
+
+def _step_title(console: Console, step) -> None:
+    console.print(Text(f"{step.step.index + 1:>3}. ", style="dim") + Text(step.step.sentence.text, style="bold"))
+
+
+def show_outcome(console: Console, rollout) -> None:
+    from cook2ltl.ltl.printer import to_unicode
+
+    failing = [step for step in rollout.steps if step.problems]
+    if failing:
+        console.print("[bold]problems by step[/bold]")
+        for step in failing:
+            _step_title(console, step.result)
+            for problem in step.problems:
+                console.print(f"       [bold red]![/bold red] {problem}", highlight=False)
+    verdict = rollout.verdict.value
+    console.print(Text("verdict ", style="dim") + Text(verdict.replace("_", " "), style=VERDICT_STYLE[verdict])
+                  + Text(f" — remaining {to_unicode(rollout.remaining)}", style="dim"), soft_wrap=True)
+    reached = sum(1 for step in rollout.steps if step.reached)
+    outcome = Text("success", style="bold green") if rollout.success else Text("failure", style="bold red")
+    console.print(outcome + Text(f" · {reached} of {len(rollout.steps)} steps reached their effects", style="dim"))
