@@ -159,7 +159,8 @@ def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cance
         for message in translation_feed(services, request.translate, cancel):
             if isinstance(message, TranslationDone):
                 translation = message.translation
-            if isinstance(message, (WorkProgress, WorkNotice, WorkStopped, TranslationDone)):  # not the steps
+            # the status only: the Translate screen and its export keep showing their own translation
+            if isinstance(message, (WorkProgress, WorkNotice, WorkStopped)):
                 yield message
         if translation is None:
             return  # stopped: translation_feed said so
