@@ -144,3 +144,28 @@ def test_the_particle_of_a_phrasal_verb_joins_the_verb():
     inside = "Stir in the cheese."
     recipe = parse(inside, {inside: [("VERB", "Stir"), ("WHAT", "the cheese")]}, {inside: {"in": ("prt", "Stir")}})
     assert signatures(recipe) == [["stir(the cheese)"]]
+
+
+def test_a_switch_the_span_model_took_for_a_place_is_the_verbs_particle():
+    """The span model reads "on" as the start of a place; after turn or switch it is the switch."""
+    before = "Switch on the toaster."
+    recipe = parse(before, {before: [("VERB", "Switch"), ("WHERE", "on the toaster")]},
+                   {before: {"on": ("prep", "Switch"), "toaster": ("pobj", "on")}})
+    assert signatures(recipe) == [["switch on(the toaster)"]]
+    after = "Turn the faucet on."
+    recipe = parse(after, {after: [("VERB", "Turn"), ("WHAT", "the faucet"), ("WHERE", "on")]},
+                   {after: {"on": ("prt", "Turn")}})
+    assert signatures(recipe) == [["turn on(the faucet)"]]
+    place = "Place on a plate."
+    recipe = parse(place, {place: [("VERB", "Place"), ("WHERE", "on a plate")]}, {place: {"on": ("prep", "Place")}})
+    assert signatures(recipe) == [["place(on a plate)"]]
+
+
+def test_a_direct_object_the_span_model_missed_is_the_what():
+    text = "Heat up your coffee in the microwave, then stir."
+    arcs = {"up": ("prt", "Heat"), "your": ("poss", "coffee"), "coffee": ("dobj", "Heat"), "in": ("prep", "Heat")}
+    recipe = parse(text, {text: [("VERB", "Heat"), ("WHERE", "in the microwave"), ("TIME", "then"),
+                                 ("VERB", "stir")]}, {text: arcs})
+    (heat, stir) = recipe.steps[0].frames
+    assert heat.signature() == "heat up(your coffee, in the microwave)" and not heat.time
+    assert heat.what[0].span.text == "your coffee"

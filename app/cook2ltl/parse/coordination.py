@@ -1,5 +1,4 @@
-"""and / or / not from a dependency parse: between actions, between objects, negation, and the particle of a
-phrasal verb."""
+"""and / or / not from a dependency parse: between actions, between objects, and negation."""
 
 from __future__ import annotations
 
@@ -14,10 +13,6 @@ _OR = re.compile(r"\bor\b", re.IGNORECASE)
 # A span model may take the negation into the verb ("Do not boil"); the verb is what follows it.
 _LEADING_NEGATION = re.compile(r"^(?:do\s+not|don'?t|do\s+n't|never|not)\s+", re.IGNORECASE)
 NEGATIONS = {"not", "n't", "never"}
-# Particles that change what a verb does (turn *on*, switch the stove *off*, heat *up*); "stir in" or
-# "pour over" keep their verb's meaning and name where things go, so they stay out.
-PARTICLES = {"on", "off", "up", "down"}
-SWITCHES = {"on", "off"}  # small parsers read "turn on the oven" as a preposition; no argument takes them
 
 
 def split_verb(span: Span) -> list[tuple[Span, Connective]]:
@@ -52,22 +47,6 @@ def is_negated(segment_start: int, verb: Span, tokens: Sequence[Token], argument
     argument of the previous action ("stir until no longer lumpy")."""
     before = _free_tokens(segment_start, verb.end, tokens, arguments)
     return any(t.dep == "neg" or t.text.lower() in NEGATIONS for t in before)
-
-
-def particle(verb: Span, tokens: Sequence[Token], arguments: Sequence[Span]) -> str:
-    """The particle of the verb's phrasal verb, or "": a word of PARTICLES the parse attaches to the verb as
-    its particle, or "on"/"off" straight after the verb; never a word inside an argument ("spread on the
-    bread" keeps its place)."""
-    heads = [i for i, t in enumerate(tokens) if verb.start <= t.start and t.end <= verb.end]
-    if not heads or any(t.text.lower() in PARTICLES for t in tokens if verb.start <= t.start and t.end <= verb.end):
-        return ""
-    for index, token in enumerate(tokens):
-        word = token.text.lower()
-        if word not in PARTICLES or token.head not in heads or _inside_any(token, arguments):
-            continue
-        if token.dep == "prt" or (word in SWITCHES and index == heads[-1] + 1):
-            return word
-    return ""
 
 
 def _free_tokens(start: int, end: int, tokens: Sequence[Token], arguments: Sequence[Span]) -> list[Token]:

@@ -10,7 +10,8 @@ from __future__ import annotations
 from typing import Sequence
 
 from cook2ltl.domain import ARGUMENT_LABELS, Argument, Connective, Frame, Label, Span, Token, field_of
-from cook2ltl.parse.coordination import connective_between, is_negated, particle, split_objects, split_verb
+from cook2ltl.parse.coordination import connective_between, is_negated, split_objects, split_verb
+from cook2ltl.parse.verb_syntax import missed_objects, particle
 
 
 def build_frames(spans: Sequence[Span], tokens: Sequence[Token]) -> tuple[tuple[Frame, ...], tuple[Connective, ...]]:
@@ -19,6 +20,7 @@ def build_frames(spans: Sequence[Span], tokens: Sequence[Token]) -> tuple[tuple[
     if not verbs:
         return (), ()
     arguments = [span for span in spans if span.label != Label.VERB]
+    arguments += missed_objects(verbs, tokens, spans)
     owned: list[list[Span]] = [[] for _ in verbs]
     for argument in arguments:
         owned[_owner(argument, verbs)].append(argument)
@@ -59,6 +61,7 @@ def _share_with_coordinated(owned: list[list[Span]]) -> None:
 
 
 def _frame(verb: Span, arguments: Sequence[Span], tokens: Sequence[Token], negated: bool) -> Frame:
+    verb_particle, arguments = particle(verb, tokens, arguments)
     filled: dict[str, list[Argument]] = {field_of(label): [] for label in ARGUMENT_LABELS}
     joined = Connective.AND
     for span in sorted(arguments, key=lambda s: s.start):
@@ -68,6 +71,6 @@ def _frame(verb: Span, arguments: Sequence[Span], tokens: Sequence[Token], negat
             filled["what"].extend(Argument(piece) for piece in pieces)
         else:
             filled[field_of(span.label)].append(Argument(span))
-    return Frame(verb=verb, negated=negated, objects_joined_by=joined, particle=particle(verb, tokens, arguments),
+    return Frame(verb=verb, negated=negated, objects_joined_by=joined, particle=verb_particle,
                  **{k: tuple(v) for k, v in filled.items()})
 

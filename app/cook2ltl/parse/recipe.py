@@ -16,6 +16,8 @@ from cook2ltl.parse.frames import build_frames
 from cook2ltl.preprocess import split_sentences, visible_text
 from cook2ltl.settings import Limits, load_settings
 
+CONNECTIVES = {"then", "and", "or", "next", "afterwards", "finally"}
+
 
 def parse_recipe(text: str, spans: SpanExtractor, dependencies: DependencyParser,
                  limits: Limits | None = None) -> ParsedRecipe:
@@ -51,8 +53,10 @@ def recipe_steps(text: str, limits: Limits) -> list[Sentence]:
 
 
 def _names_something(span: Span) -> bool:
-    """A span of marks or punctuation alone (a stray accent, an emoji) is no verb or argument."""
-    return any(ch.isalnum() for ch in span.text)
+    """A span of marks or punctuation alone (a stray accent, an emoji) is no verb or argument, nor one of
+    words that only join steps ("then")."""
+    words = span.text.lower().replace(",", " ").split()
+    return any(ch.isalnum() for ch in span.text) and not (words and set(words) <= CONNECTIVES)
 
 
 def _with_resolved_objects(steps: list[Step]) -> tuple[Step, ...]:
