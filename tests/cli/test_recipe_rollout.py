@@ -46,7 +46,7 @@ def test_each_line_with_its_writer_and_the_formula_s_progress(recipe):
     assert lines[drain + 1].split()[:3] == ["✓", "pick_up(pot)", "model"]
     assert "−in(pot, stovetop)" in lines[drain + 1]  # where step 1 left it
     assert lines[drain + 2].split()[:4] == ["✓", "put(pot,", "colander)", "planner"]
-    assert lines[drain + 3].split() == ["remaining", "⊤", "satisfied"]
+    assert lines[drain + 3].split() == ["satisfied", "remaining", "⊤"]
     assert lines[-2].startswith("verdict satisfied") and lines[-1] == "success · 2 of 2 steps reached their effects"
 
 

@@ -82,7 +82,6 @@ def show_began(console: Console, began, recipe: str, translation) -> None:
 def show_action(console: Console, rolled) -> None:
     """An action as it is rolled out: its lines (✓ applied, ✗ refused), who wrote each, what changed, and the
     recipe formula's progress after it."""
-    from cook2ltl.ltl.printer import to_unicode
     from cook2ltl.world.effects import fact_text
 
     run, step = rolled.run, rolled.step
@@ -109,11 +108,9 @@ def show_action(console: Console, rolled) -> None:
             changes = [f"+{fact_text(f)}" for f in line.added] + [f"−{fact_text(f)}" for f in line.removed]
             row += Text(" " + " ".join(changes), style="cyan")
         console.print(row, overflow="ellipsis", no_wrap=True)
-    last = run.lines[-1] if run.lines else None
-    if last is not None:
-        console.print(Text("         remaining ", style="dim") + Text(to_unicode(last.remaining)) + Text(
-            f"   {last.verdict.value.replace('_', ' ')}", style=VERDICT_STYLE[last.verdict.value]),
-            overflow="ellipsis", no_wrap=True)
+    if run.lines:
+        console.print(Text("         ") + _progress(run.lines[-1].verdict, run.lines[-1].remaining),
+                      overflow="ellipsis", no_wrap=True)
 
 
 def show_step_end(console: Console, step) -> None:
@@ -123,13 +120,20 @@ def show_step_end(console: Console, step) -> None:
         console.print(f"     [bold red]![/bold red] {problem}", highlight=False)
 
 
+def _progress(verdict, remaining) -> Text:
+    """The verdict first, then what remains: a long remainder is cut at the line's end (--json has it whole)."""
+    from cook2ltl.ltl.printer import to_unicode
+
+    value = verdict.value
+    return (Text(f"{value.replace('_', ' '):<17}", style=VERDICT_STYLE[value]) + Text("remaining ", style="dim")
+            + Text(to_unicode(remaining)))
+
+
 def _step_title(console: Console, step) -> None:
     console.print(Text(f"{step.step.index + 1:>3}. ", style="dim") + Text(step.step.sentence.text, style="bold"))
 
 
 def show_outcome(console: Console, rollout) -> None:
-    from cook2ltl.ltl.printer import to_unicode
-
     failing = [step for step in rollout.steps if step.problems]
     if failing:
         console.print("[bold]problems by step[/bold]")
@@ -137,9 +141,8 @@ def show_outcome(console: Console, rollout) -> None:
             _step_title(console, step.result)
             for problem in step.problems:
                 console.print(f"       [bold red]![/bold red] {problem}", highlight=False)
-    verdict = rollout.verdict.value
-    console.print(Text("verdict ", style="dim") + Text(verdict.replace("_", " "), style=VERDICT_STYLE[verdict])
-                  + Text(f" — remaining {to_unicode(rollout.remaining)}", style="dim"), soft_wrap=True)
+    console.print(Text("verdict ", style="dim") + _progress(rollout.verdict, rollout.remaining),
+                  overflow="ellipsis", no_wrap=True)
     reached = sum(1 for step in rollout.steps if step.reached)
     outcome = Text("success", style="bold green") if rollout.success else Text("failure", style="bold red")
     console.print(outcome + Text(f" · {reached} of {len(rollout.steps)} steps reached their effects", style="dim"))

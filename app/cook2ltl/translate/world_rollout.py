@@ -59,8 +59,8 @@ class ActionRun:
 
     @property
     def reached(self) -> bool:
-        """The action left its intended effect (an action without a plan never does)."""
-        return self.avoided or (self.result.check is not None and bool(self.result.plan) and not self.missing)
+        """Its intended effect holds after its lines (an action the world model never checked: unknown, no)."""
+        return self.avoided or (self.result.check is not None and not self.missing)
 
 
 @dataclass(frozen=True)
@@ -243,13 +243,26 @@ def _step_json(step: StepRun) -> dict:
         "index": step.result.step.index,
         "text": step.result.step.sentence.text,
         "formula": to_spot(step.result.formula),
-        "actions": [{"action": run.result.reduction.action.text(), "plan": [call.text() for call in run.result.plan],
-                     "avoided": run.avoided, "reached": run.reached,
-                     "check": run.result.check.json() if run.result.check is not None else None,
-                     "trace": [line_json(line) for line in run.lines]} for run in step.actions],
+        "actions": [_action_json(run) for run in step.actions],
         "remaining": to_spot(step.remaining),
         "verdict": step.verdict.value,
         "problems": list(step.problems),
+    }
+
+
+def _action_json(run: ActionRun) -> dict:
+    """The recipe formula's remaining obligation once, after the action's last line (per line it would repeat the
+    whole recipe line after line)."""
+    last = next((line for line in reversed(run.lines) if line.applied), None)
+    return {
+        "action": run.result.reduction.action.text(),
+        "plan": [call.text() for call in run.result.plan],
+        "avoided": run.avoided,
+        "reached": run.reached,
+        "check": run.result.check.json() if run.result.check is not None else None,
+        "trace": [line_json(line) for line in run.lines],
+        "remaining": to_spot(last.remaining) if last else None,
+        "verdict": last.verdict.value if last else None,
     }
 
 
@@ -262,6 +275,5 @@ def line_json(line: LineRun) -> dict:
         "added": [fact_text(f) for f in line.added],
         "removed": [fact_text(f) for f in line.removed],
         "facts": sorted(atom.text for atom in line.facts),
-        "remaining": to_spot(line.remaining),
         "verdict": line.verdict.value,
     }
