@@ -3,7 +3,7 @@
 The lines are applied in order from the state the action starts in; a line that cannot be applied there is
 dropped and reported (the state stays as it was). If the intended effect does not hold at the end, the
 planner writes the rest from the state reached (LLM+P, Liu et al. 2023); with no lines at all it writes the
-whole plan. Every line keeps who wrote it.
+whole plan. Lines the effect does not need are then dropped (`pruned`). Every line keeps who wrote it.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from cook2ltl.reduce.model import Call
 from cook2ltl.world.effects import fact_text
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.planner import Planner, reached
-from cook2ltl.world.world import World
+from cook2ltl.world.world import KEPT, World
 
 PLANNER = "planner"
 
@@ -64,6 +64,7 @@ class Grounding:
 
 def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequence[Fact], planner: Planner | None,
                origin: str = "model") -> PlanCheck:
+    start = state
     kept: list[Call] = []
     problems: list[str] = []
     for line, call in enumerate(plan, 1):
@@ -92,4 +93,41 @@ def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequenc
     elif missing:
         problems.append(f"the plan does not reach {', '.join(fact_text(f) for f in missing)}")
     done = all(reached(state, fact) for fact in effect)
+    if done and effect:
+        kept, written_by, state = pruned(world, start, list(zip(kept, written_by)), effect)
     return PlanCheck(applicable, tuple(effect), done, tuple(kept), tuple(written_by), tuple(problems), state)
+
+
+def pruned(world: World, start: State, lines: list[tuple[Call, str]], effect: Sequence[Fact]
+           ) -> tuple[list[Call], list[str], State]:
+    """Greedy action elimination (Nakhost and Müller 2010): a line is dropped, with the later lines that no
+    longer apply without it, when the rest still reaches the effect and leaves the kitchen no further from how
+    the action found it. A model's wandering (the tomato microwaved before it is chopped) goes; lines that
+    tidy up (closing the fridge, switching the oven off) stay."""
+    lines, states = _replay(world, start, lines)  # states[k]: after the first k lines
+    index = 0
+    while index < len(lines):
+        rest, after = _replay(world, states[index], lines[index + 1:])
+        if all(reached(after[-1], f) for f in effect) and _changes(after[-1], start) <= _changes(states[-1], start):
+            lines, states = lines[:index] + rest, states[:index + 1] + after[1:]
+        else:
+            index += 1
+    return [call for call, _ in lines], [source for _, source in lines], states[-1]
+
+
+def _changes(state: State, start: State) -> int:
+    """How many facts of the kitchen differ from `start`, leaving out what the domains only keep as
+    bookkeeping (what is shut away or carried follows from the rest)."""
+    return sum(1 for fact in state.facts ^ start.facts if fact[0] not in KEPT)
+
+
+def _replay(world: World, state: State, lines: list[tuple[Call, str]]
+            ) -> tuple[list[tuple[Call, str]], list[State]]:
+    """The lines that apply in order from `state` (the others skipped), and the states from `state` on."""
+    kept, states = [], [state]
+    for call, source in lines:
+        step = world.apply(states[-1], call)
+        if step.applied:
+            kept.append((call, source))
+            states.append(step.state)
+    return kept, states

@@ -18,6 +18,7 @@ from cook2ltl.world.pddl import Domain
 
 WAIT = "wait"
 PROCESS = "process-"
+KEPT = ("enclosed", "carried")  # facts the domains keep up to date from the others (see kept_facts)
 
 
 @dataclass(frozen=True)
