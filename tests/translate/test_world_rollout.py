@@ -154,3 +154,13 @@ def test_a_negated_action_is_not_run_and_a_violated_formula_is_reported_on_its_s
     _, never = rolled_out(replace(translation, formula=parse('G !"pick_up(pot)"')))
     assert never.verdict.value == "violated" and not never.success
     assert "the recipe's formula is violated at cook(pasta): pick_up(pot)" in never.steps[0].problems
+
+
+def test_an_action_with_neither_plan_nor_effect_is_not_reached(kitchen):
+    """As for `cook(penne)` in a THOR kitchen that has no penne: nothing to do, nothing to observe."""
+    translation = translated(kitchen)
+    drain = translation.steps[1].actions[0]
+    empty = replace(drain, plan=(), check=replace(drain.check, effect=(), plan=(), written_by=()))
+    translation = replace(translation, steps=(translation.steps[0], replace(translation.steps[1], actions=(empty,))))
+    _, rollout = rolled_out(translation)
+    assert not rollout.steps[1].actions[0].reached and not rollout.success

@@ -59,8 +59,10 @@ class ActionRun:
 
     @property
     def reached(self) -> bool:
-        """Its intended effect holds after its lines (an action the world model never checked: unknown, no)."""
-        return self.avoided or (self.result.check is not None and not self.missing)
+        """Its intended effect holds after its lines. Never for an action the world model did not check, nor for
+        one with neither a plan nor an effect: nothing shows it was done."""
+        check = self.result.check
+        return self.avoided or (check is not None and bool(self.result.plan or check.effect) and not self.missing)
 
 
 @dataclass(frozen=True)
