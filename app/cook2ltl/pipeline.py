@@ -205,7 +205,10 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
             for action in actions_of(frame):
                 if cancel is not None and cancel.is_set():
                     return
+                kitchen = state.world_state
                 result, element = state.action(frame_index, action)
+                if frame.negated:  # checked where the recipe is, but never done: the kitchen stays as it was
+                    state.world_state = kitchen
                 results.append(result)
                 done += 1
                 yield ActionDone(step.index, result, done)

@@ -81,7 +81,7 @@ def test_the_planner_writes_a_whole_plan_that_reaches_the_effect(kitchen):
 def test_a_plan_that_does_nothing_does_not_pass_and_the_planner_completes_it(kitchen):
     start = kitchen.start([]).state
     effect = intended_effect(act("preheat", what="oven", temperature="350_f"), kitchen.world, start)
-    assert effect == (("hot", "oven"),)
+    assert effect == (("hot", "oven"), ("on", "oven"))  # preheated, and left on for what goes in next
     alone = check_plan(kitchen.world, start, (Call("open", ("oven",)),), effect, None)
     assert alone.applicable and not alone.effect_reached and not alone.passed
     completed = check_plan(kitchen.world, start, (Call("open", ("oven",)),), effect, kitchen.planner)
@@ -141,7 +141,7 @@ def test_a_recipe_runs_in_one_state_and_lines_are_chosen_among_those_the_world_a
     steps = events[-1].translation.steps
     preheat, bake = steps[0].actions[0], steps[1].actions[0]
     assert [c.text() for c in preheat.plan] == ["turn_on(oven)", "wait(oven == hot)"]
-    assert preheat.check.passed and preheat.check.effect == (("hot", "oven"),)
+    assert preheat.check.passed and preheat.check.effect == (("hot", "oven"), ("on", "oven"))
     assert "pick_up(oven)" not in model.grammars[0].splitlines()
     # the oven is still on: bake puts the cake in and waits; nothing turns the oven on again
     assert bake.check.effect_reached and bake.check.effect == (("cooked", "cake"),)
@@ -160,3 +160,17 @@ def test_lines_the_effect_does_not_need_are_dropped_and_tidying_ones_kept(kitche
     assert checked.passed and [c.text() for c in checked.plan] == [
         "open(fridge)", "pick_up(apple)", "put(apple, fridge)", "close(fridge)"]
     assert checked.written_by == ("model",) * 4
+
+
+def test_an_action_the_recipe_forbids_is_checked_but_leaves_the_kitchen_as_it_was(kitchen):
+    from cook2ltl.parse import parse_recipe
+    from cook2ltl.pipeline import Variant
+
+    text = "Do not preheat the oven. Bake the cake."
+    spans = {"Do not preheat the oven.": [("VERB", "preheat"), ("WHAT", "the oven")], **SPANS}
+    model = ScriptedModel({"preheat": "turn_on(oven)\nwait(oven == hot)", "bake": "open(oven)\npick_up(cake)"})
+    translator = Translator(PRIMITIVES, model, None, grounding=kitchen, variant=Variant.AR)
+    events = list(translate(parse_recipe(text, ScriptedSpans(spans), ScriptedDependencies()), translator))
+    preheat, bake = (step.actions[0] for step in events[-1].translation.steps)
+    assert events[-1].translation.steps[0].step.frames[0].negated and preheat.check.passed
+    assert any(call.name == "turn_on" for call in bake.plan)  # nothing was switched on before
