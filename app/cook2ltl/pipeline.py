@@ -108,6 +108,7 @@ class Stats:
     reached: int = 0  # of those, the ones whose plan reaches the action's intended effect
     model_lines_applied: int = 0  # new reductions whose lines as the model wrote them all applied
     planner_lines: int = 0  # plan lines the planner wrote
+    effect_calls: int = 0  # model calls writing the effect of a verb the verb-effect table lacks
     seconds: float = 0.0
 
 
@@ -221,7 +222,9 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
         elements.append(element)
         steps.append(StepResult(step, tuple(results), formula, problems))
         yield StepDone(steps[-1])
-    stats = replace(state.stats, seconds=time.perf_counter() - started)
+    written = state.intents.written if state.intents else []
+    stats = replace(state.stats, seconds=time.perf_counter() - started, effect_calls=len(written),
+                    llm_seconds=state.stats.llm_seconds + sum(usage.seconds for usage in written))
     yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
                                tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None,
                                state.world_start, state.world_binding))

@@ -32,7 +32,7 @@ def test_the_prompt_shows_the_tables_own_entries():
 def test_the_model_writes_only_observable_atoms_over_the_actions_objects(kitchen):
     state = kitchen.start(["salad", "dressing"]).state
     model = ScriptedModel({"zhuzh": "ready(salad)\ncombined(salad)\nin(dressing, salad)\npick_up(salad)"})
-    templates = write_effect(act("zhuzh", what="salad", how="dressing"), model, kitchen.world, state, verb_table())
+    templates, _ = write_effect(act("zhuzh", what="salad", how="dressing"), model, kitchen.world, state, verb_table())
     assert templates == (("combined", ("what",)), ("in", ("how", "what")))
     offered = set(model.grammars[0].splitlines())
     assert "combined(salad)" in offered and "hot(dressing)" in offered
@@ -49,15 +49,20 @@ def test_a_written_effect_is_kept_with_the_entry_and_reused_without_asking_again
     model = ScriptedModel({"zhuzh": "combined(salad)\npick_up(salad)"})
     translator = Translator(PRIMITIVES, model, library, Variant.AR_LIBRARY, grounding=kitchen)
 
+    stats = []
+
     def run():
         parsed = parse_recipe(RECIPE, ScriptedSpans(SPANS), ScriptedDependencies())
-        return list(translate(parsed, translator))[-1].translation.steps[0].actions[0]
+        translation = list(translate(parsed, translator))[-1].translation
+        stats.append(translation.stats)
+        return translation.steps[0].actions[0]
 
     first = run()
+    assert stats[-1].effect_calls == 1
     assert first.check.effect == (("combined", "salad"),) and first.check.effect_reached
     (entry,) = library.entries()
     assert entry.effect == ("combined(what)",)
     asked = model.calls
     again = run()
-    assert model.calls == asked  # neither the plan nor the effect is asked again
+    assert model.calls == asked and stats[-1].effect_calls == 0  # neither the plan nor the effect is asked again
     assert again.check.effect == (("combined", "salad"),) and again.check.effect_reached

@@ -311,7 +311,8 @@ def world_note(model: str, rows: list[dict]) -> str:
             f"({pm([r['world_reached'] for r in rows], 0)} of {pm([r['world_new'] for r in rows], 0)}; "
             f"{pm([r['world_no_effect'] for r in rows], 0)} with no effect the world observes); "
             f"{pm(as_written)} reach it as the model wrote them; the planner wrote "
-            f"{pm([r['world_planner_lines'] for r in rows], 0)} lines.\n")
+            f"{pm([r['world_planner_lines'] for r in rows], 0)} lines; the model wrote the effects of "
+            f"{pm([r.get('effect_calls', 0) for r in rows], 0)} verbs the table lacks.\n")
 
 
 def bound_note(bound: dict) -> str:

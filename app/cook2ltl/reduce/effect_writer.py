@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 
 from cook2ltl.reduce.llm import LanguageModel
-from cook2ltl.reduce.model import Action
+from cook2ltl.reduce.model import Action, Usage
 from cook2ltl.world.effects import SLOTS, Template, parse_template, template_text
 from cook2ltl.world.logic import State
 from cook2ltl.world.world import World
@@ -52,8 +52,8 @@ def effect_prompt(table: Mapping[str, Sequence[Template]]) -> str:
 
 
 def write_effect(action: Action, model: LanguageModel, world: World, state: State,
-                 table: Mapping[str, Sequence[Template]]) -> tuple[Template, ...]:
-    """The model's effect for `action`, as templates over its slots."""
+                 table: Mapping[str, Sequence[Template]]) -> tuple[tuple[Template, ...], Usage]:
+    """The model's effect for `action`, as templates over its slots, and what writing it cost."""
     from cook2ltl.reduce.prompt import header
 
     options = _atoms(action, world, state, table)
@@ -70,7 +70,7 @@ def write_effect(action: Action, model: LanguageModel, world: World, state: Stat
         if line.strip() in options:
             predicate, args = parse_template(line.strip())
             templates.append((predicate, tuple(slots.get(arg, arg) for arg in args)))
-    return tuple(dict.fromkeys(templates))
+    return tuple(dict.fromkeys(templates)), completion.usage
 
 
 def _atoms(action: Action, world: World, state: State, table: Mapping[str, Sequence[Template]]) -> list[str]:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from cook2ltl.reduce.llm import LanguageModel
-from cook2ltl.reduce.model import Action
+from cook2ltl.reduce.model import Action, Usage
 from cook2ltl.world.effects import Template, intended_effect, parse_template, table_effect, verb_table
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.world import World
@@ -17,6 +17,7 @@ class Intents:
         self.world = world
         self.model = model  # None: a verb the table lacks has no effect (nothing is asked)
         self._known: dict[tuple[str, tuple[str, ...]], tuple[Template, ...]] = {}
+        self.written: list[Usage] = []  # one per effect the model wrote
 
     def templates(self, action: Action, state: State, stored: Sequence[str] | None = None,
                   write: bool = True) -> tuple[Template, ...]:
@@ -31,7 +32,8 @@ class Intents:
             if known is None:
                 from cook2ltl.reduce.effect_writer import write_effect
 
-                known = write_effect(action, self.model, self.world, state, verb_table())
+                known, usage = write_effect(action, self.model, self.world, state, verb_table())
+                self.written.append(usage)
             self._known[key] = known or ()
         return self._known[key]
 
