@@ -7,7 +7,7 @@ import pytest
 from cook2ltl.bench.results import mean_std, pm, write
 from cook2ltl.bench.table1 import (FIRST_SEED, VARIANTS, Stage, check_variants, in_run_order, library_bound, measure,
                                    table1_markdown)
-from cook2ltl.bench.table2 import table2_markdown
+from cook2ltl.bench.table2 import TASK_SETS, choose_tasks, table2_markdown
 from cook2ltl.errors import UserError
 from cook2ltl.parse import parse_recipe
 from cook2ltl.reduce.primitives import load_primitives
@@ -159,6 +159,16 @@ def test_table2_side_by_side():
     table = table2_markdown(record).splitlines()
     assert table[2] == "| cut-bread | 1/2 | 1.50 ± 0.00 | 2/2 | 1.50 ± 0.00 | — | — | — | — | 9/10 · 12.85 | 8/10 · 1.12 |"
     assert "- AR, all tasks: success 1/2 (50 %); seconds per rollout 1.50 (first run 1.50, later runs 1.50)" in table
+
+
+def test_table2_task_sets():
+    chosen = {which: [t.id for t in choose_tasks(which)] for which in TASK_SETS}
+    assert chosen["paper"] == ["microwave-potato", "chop-tomato", "cut-bread", "refrigerate-apple"]
+    assert chosen["all"] == chosen["paper"] + chosen["suite"] and len(chosen["all"]) == 33  # tasks.toml only
+    assert len(chosen["paraphrase"]) == 15 and all(i.startswith("para-") for i in chosen["paraphrase"])
+    assert chosen["smoke"] == ["microwave-potato"]
+    with pytest.raises(UserError, match="unknown task set"):
+        choose_tasks("held-out")
 
 
 def test_the_library_bound_counts_distinct_keys_of_reduced_actions():

@@ -1,12 +1,14 @@
-"""The task suite in assets/tasks/: the paper's four and the rest, each goal unmet at the start and reached by
-its reference plan through ai2thor's Controller; goal conditions on THOR metadata; the file's checks."""
+"""The task suite in assets/tasks/: the paper's four, the rest and the held-out paraphrases, each goal unmet at
+the start and reached by its reference plan through ai2thor's Controller; goal conditions on THOR metadata; the
+files' checks."""
 
 import pytest
 
 from cook2ltl.errors import UserError
 from cook2ltl.kitchen.rollout import Stop
 from cook2ltl.kitchen.tasks import (
-    CATEGORIES, Condition, check_goal, condition_met, find_task, load_tasks, reference_formula,
+    CATEGORIES, PARAPHRASES, Condition, check_goal, condition_met, find_task, load_tasks, paraphrases_file,
+    reference_formula, tasks_file,
 )
 from cook2ltl.kitchen.trial import TrialDone, run_trial
 from cook2ltl.ltl import Verdict, parse
@@ -22,6 +24,26 @@ def test_the_papers_four_tasks_and_at_least_twenty_more_across_the_kitchens():
     assert {t.category for t in tasks} == set(CATEGORIES)
     assert len({t.scene for t in tasks}) >= 25
     assert all(t.reference for t in tasks)
+
+
+# paraphrases.toml's instructions, fixed before any measurement: never reworded to make a task pass.
+PARAPHRASED = [
+    "Heat the potato up in the microwave.", "Put the apple in the fridge to chill it.",
+    "Cut the bread into slices and toast them.", "Chop the apple, then refrigerate it.", "Switch the microwave on.",
+    "Get some water into the mug.", "Place the egg in the bowl and microwave it.",
+    "Take the lettuce and cool it in the refrigerator.", "Dice the potato and fry it in the pan.",
+    "Turn the faucet on.", "Warm up the mug in the microwave, then switch the microwave off.",
+    "Wash the dirty plate in the sink.", "Slice the tomato and put it on the plate.",
+    "Pour coffee into the mug using the coffee machine.", "Boil some water in the pot on the stove.",
+]
+
+
+def test_the_paraphrases_follow_the_33_tasks_with_their_wordings_unchanged():
+    tasks, paraphrases = load_tasks(tasks_file()), load_tasks(paraphrases_file())
+    assert len(tasks) == 33 and load_tasks() == tasks + paraphrases  # so every test here covers both files
+    assert [t.instruction for t in paraphrases] == PARAPHRASED
+    assert {t.source for t in paraphrases} == {PARAPHRASES} and PARAPHRASES not in {t.source for t in tasks}
+    assert find_task("Turn the faucet on.").id == "para-faucet-on"
 
 
 def test_a_task_is_found_by_id_or_instruction():
@@ -99,3 +121,14 @@ def test_the_tasks_file_is_checked(tmp_path):
     bad.write_text(bad.read_text().replace('category = "heat"', 'category = "bake"'))
     with pytest.raises(UserError, match="category must be one of"):
         load_tasks(bad)
+
+
+def test_an_id_is_not_used_in_both_files(tmp_path, monkeypatch):
+    (tmp_path / "tasks").mkdir()
+    task = ('[[task]]\nid = "x"\ninstruction = "X it."\nscene = "FloorPlan1"\ncategory = "heat"\nsource = "here"\n'
+            'goal = [{ object = "Potato", isCooked = true }]\n')
+    for name in ("tasks.toml", "paraphrases.toml"):
+        (tmp_path / "tasks" / name).write_text(task)
+    monkeypatch.setenv("COOK2LTL_ASSETS", str(tmp_path))
+    with pytest.raises(UserError, match="task ids used twice: x"):
+        load_tasks()

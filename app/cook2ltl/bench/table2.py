@@ -29,7 +29,8 @@ PAPER = {
     "cut-bread": ((9, 12.85), (8, 1.12)),
     "refrigerate-apple": ((7.6, 14.6), (8, 1.56)),
 }
-TASK_SETS = ("paper", "suite", "all", "smoke")  # smoke: the first paper task only
+# all: tasks.toml's 33 (paper and suite); paraphrase: paraphrases.toml's; smoke: the first paper task only
+TASK_SETS = ("paper", "suite", "all", "paraphrase", "smoke")
 REPAIR = "AR+A repair"
 WORLD = "AR+A world"
 # Each column: the pipeline's variant, how many repairs a plan the kitchen refuses gets (None: not checked),
@@ -39,11 +40,17 @@ COLUMNS = {"AR": (Variant.AR, None, False), "AR+A": (Variant.AR_LIBRARY, None, F
 
 
 def choose_tasks(which: str):
-    from cook2ltl.kitchen.tasks import load_tasks
+    from cook2ltl.kitchen.tasks import PARAPHRASES, load_tasks
+
+    def set_of(task) -> str:
+        if task.source.startswith("paper"):
+            return "paper"
+        return "paraphrase" if task.source == PARAPHRASES else "suite"
 
     if which not in TASK_SETS:
         raise UserError(f"unknown task set {which!r}", f"choose from {', '.join(TASK_SETS)}.")
-    tasks = [t for t in load_tasks() if which == "all" or (which != "suite") == t.source.startswith("paper")]
+    wanted = {"all": ("paper", "suite"), "smoke": ("paper",)}.get(which, (which,))
+    tasks = [t for t in load_tasks() if set_of(t) in wanted]
     return tasks[:1] if which == "smoke" else tasks
 
 

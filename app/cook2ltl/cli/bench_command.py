@@ -32,7 +32,8 @@ def bench_command(
         None, help="Variants, repeatable. Table I: AR+A, 'AR+A warm', 'AR+A approved-only', AR, AR*, 'AR+A repair' "
                    "(default all, in this order); Table II: AR, AR+A, 'AR+A repair'."),
     recipes: Optional[int] = typer.Option(None, help="Table I on the first N of the 50 recipes only."),
-    tasks: str = typer.Option("paper", help="Table II tasks: paper (the 4 of the paper), suite or all."),
+    tasks: str = typer.Option("paper", help="Table II tasks: paper (the 4 of the paper), suite, all (the 33 of "
+                                            "tasks.toml) or paraphrase (the held-out paraphrases.toml)."),
     seed: Optional[int] = typer.Option(None, help="Table I: the first run's seed; later runs take the next ones. "
                                                   "Run 4242 (the default) meets the recipes in the file's order, "
                                                   "others in an order shuffled by their seed."),

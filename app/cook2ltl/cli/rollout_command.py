@@ -142,16 +142,23 @@ def _scene(name: str) -> str:
 
 
 def show_tasks(console: Console, as_json: bool) -> None:
-    from cook2ltl.kitchen.tasks import load_tasks, task_json
+    from cook2ltl.kitchen.tasks import PARAPHRASES, load_tasks, task_json
 
     tasks = load_tasks()
     if as_json:
         typer.echo(json.dumps([task_json(t) for t in tasks], ensure_ascii=False, indent=2))
         return
-    for task in tasks:
-        goal = "; ".join(c.text() for c in task.goal)
-        console.print(f"[bold]{task.id:<20}[/bold] {task.instruction:<34} [dim]{task.scene:<12} {task.category:<7}"
-                      f" {goal}[/dim]", highlight=False, soft_wrap=True)
+    groups = (("", [t for t in tasks if t.source != PARAPHRASES]),
+              ("\nparaphrases (held out: paraphrased and compound instructions)",
+               [t for t in tasks if t.source == PARAPHRASES]))
+    for heading, group in groups:
+        if heading and group:
+            console.print(heading, style="bold", highlight=False)
+        width = max([34] + [len(t.instruction) for t in group])
+        for task in group:
+            goal = "; ".join(c.text() for c in task.goal)
+            console.print(f"[bold]{task.id:<20}[/bold] {task.instruction:<{width}} [dim]{task.scene:<12} "
+                          f"{task.category:<7} {goal}[/dim]", highlight=False, soft_wrap=True)
 
 
 def show_header(console: Console, task, plan, formula, scene: str, backend: str) -> None:

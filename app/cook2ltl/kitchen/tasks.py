@@ -1,4 +1,5 @@
-"""Kitchen tasks with goal conditions: assets/tasks/tasks.toml.
+"""Kitchen tasks with goal conditions: assets/tasks/tasks.toml, and paraphrases.toml (held-out paraphrased and
+compound instructions, to measure how the method generalises).
 
 A task is an instruction ("Microwave the potato."), the kitchen it runs in,
 and goal conditions on THOR object state defined beforehand, as in the
@@ -37,6 +38,7 @@ FIELDS = frozenset({
     "isBroken", "isUsedUp", "in",
 })  # fmt: skip
 CATEGORIES = ("heat", "cool", "slice", "clean", "fill", "put", "toggle")
+PARAPHRASES = "cook2ltl paraphrases"  # the source of paraphrases.toml's tasks
 
 
 @dataclass(frozen=True)
@@ -77,8 +79,15 @@ def tasks_file() -> Path:
     return paths.assets_dir() / "tasks" / "tasks.toml"
 
 
+def paraphrases_file() -> Path:
+    return paths.assets_dir() / "tasks" / "paraphrases.toml"
+
+
 def load_tasks(path: Path | None = None) -> tuple[Task, ...]:
-    return _load(path or tasks_file())
+    """The tasks of `path`; by default tasks.toml's, then paraphrases.toml's."""
+    if path is not None:
+        return _load(path)
+    return _unique(_load(tasks_file()) + _load(paraphrases_file()), f"{tasks_file()} and {paraphrases_file()}")
 
 
 @cache
@@ -87,11 +96,14 @@ def _load(path: Path) -> tuple[Task, ...]:
         raw = tomllib.loads(path.read_text(encoding="utf-8"))
     except (OSError, tomllib.TOMLDecodeError) as error:
         raise UserError(f"Cannot read the tasks file {path}: {error}", "see assets/tasks/README.md.") from error
-    tasks = tuple(_task(entry, path) for entry in raw.get("task", []))
+    return _unique(tuple(_task(entry, path) for entry in raw.get("task", [])), str(path))
+
+
+def _unique(tasks: tuple[Task, ...], where: str) -> tuple[Task, ...]:
     ids = [t.id for t in tasks]
     duplicates = sorted({i for i in ids if ids.count(i) > 1})
     if duplicates:
-        raise UserError(f"{path}: task ids used twice: {', '.join(duplicates)}.")
+        raise UserError(f"{where}: task ids used twice: {', '.join(duplicates)}.")
     return tasks
 
 
