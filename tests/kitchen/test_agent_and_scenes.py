@@ -67,3 +67,11 @@ def test_scene_names_are_normalised_and_checked():
     assert canonical_scene("FloorPlan7_physics") == "FloorPlan7"
     with pytest.raises(UnknownScene, match="FloorPlan1, FloorPlan2"):
         canonical_scene("FloorPlan301")
+
+
+def test_a_name_no_type_has_stands_for_its_head_noun():
+    from cook2ltl.kitchen.names import types_for
+
+    assert types_for("dirty_plate", {"Plate", "Mug"}) == ("Plate",)
+    assert types_for("wine_bottle", {"WineBottle", "Bottle"}) == ("WineBottle",)  # the whole name first
+    assert types_for("blue_zebra", {"Plate"}) == ()

@@ -73,9 +73,11 @@ def piece_types() -> dict[str, str]:
 
 
 def types_for(name: str, available: set[str]) -> tuple[str, ...]:
-    """The object types `name` may stand for, best first, among `available`."""
+    """The object types `name` may stand for, best first, among `available`; a name no type has stands for what
+    its head noun does (the last word: a dirty_plate is a plate, salted_water is water)."""
     wanted = STAND_INS.get(key(name)) or tuple(t for t in available if key(t) == key(name))
-    return tuple(t for t in wanted if t in available)
+    found = tuple(t for t in wanted if t in available)
+    return found or (types_for(name.rsplit("_", 1)[1], available) if "_" in name.strip("_") else ())
 
 
 def scene_names(objects: Sequence[Obj]) -> list[str]:

@@ -6,10 +6,10 @@ The prompt shows the table's own entries as examples, one verb for each state th
         cold(food)
         in(food, fridge)
 
-and then the action's header. Each line the model writes is one atom among those the world can observe,
-over the action's objects and the kitchen objects the table names (fridge, plate …); a blank line ends the
-effect, so a verb with no observable effect ("serve") gets none. The atoms are stored with the action's
-values put back as slots (`boiled(what)`), like the table's.
+and then the action's header. The model writes one atom among those the world can observe, over the
+action's objects and the kitchen places the table names (fridge, plate …), or a blank line: a verb with no
+observable effect ("serve") gets none. The atom is stored with the action's values put back as slots
+(`boiled(what)`), like the table's.
 """
 
 from __future__ import annotations
@@ -22,7 +22,9 @@ from cook2ltl.world.effects import SLOTS, Template, parse_template, template_tex
 from cook2ltl.world.logic import State
 from cook2ltl.world.world import World
 
-MAX_ATOMS = 3  # the table's longest effects have three atoms
+# One atom, the model's best guess: effects are minimal and certain, and asked for more, a 1.5B model always
+# goes on with ones that contradict or have nothing to do with the verb (sizzle → sliced, toss → in(bin, apple)).
+MAX_ATOMS = 1
 TOKENS_PER_ATOM = 16
 EXAMPLE_VALUES = {"what": "food", "where": "pot", "how": "oil"}  # the examples' objects, by slot
 HEADER = "# The states each cooking action leaves, one per line; a verb that leaves none has no lines.\n"
@@ -59,9 +61,8 @@ def write_effect(action: Action, model: LanguageModel, world: World, state: Stat
     options = _atoms(action, world, state, table)
 
     def next_lines(text: str) -> list[str] | None:
-        written = [line.strip() for line in text.splitlines() if line.strip()]
-        left = [atom for atom in options if atom not in written]
-        return left if left and len(written) < MAX_ATOMS else None
+        written = [line for line in text.splitlines() if line.strip()]
+        return options if len(written) < MAX_ATOMS else None
 
     completion = model.complete_lines(effect_prompt(table), header(action), next_lines, TOKENS_PER_ATOM)
     slots = {p.value: p.category for p in action.parameters if p.category in SLOTS}
@@ -74,10 +75,13 @@ def write_effect(action: Action, model: LanguageModel, world: World, state: Stat
 
 
 def _atoms(action: Action, world: World, state: State, table: Mapping[str, Sequence[Template]]) -> list[str]:
-    """Every atom the model may write: a table predicate the world observes, over the action's objects
-    (and, as the place something ends in, a kitchen object the table names)."""
+    """Every atom the model may write: a table predicate the world observes, over the action's objects. The
+    place something ends in is one of them that is no liquid, or, for an action that names no place, a
+    kitchen place the table names (the fridge for "chill")."""
     objects = [p.value for p in action.parameters if p.category in SLOTS and p.value in state.objects]
-    places = [*objects, *sorted(c for c in _constants(table) if c in state.objects)]
+    named_place = any(p.category == "where" for p in action.parameters)
+    places = [o for o in objects if ("liquid", o) not in state.facts]
+    places += [] if named_place else sorted(c for c in _constants(table) if c in state.objects)
     atoms = []
     for predicate in sorted({p for templates in table.values() for p, args in templates}):
         arity = world.domain.predicates.get(world.predicate(predicate) or predicate)
