@@ -65,6 +65,7 @@ def rollout_command(
     """
     from cook2ltl.kitchen.launcher import start_kitchen
     from cook2ltl.kitchen.planning import open_planner
+    from cook2ltl.kitchen.tasks import set_up
     from cook2ltl.kitchen.trial import TrialDone, run_trial, trial_json
     from cook2ltl.settings import load_settings
 
@@ -94,7 +95,8 @@ def rollout_command(
         if formula is None:
             with errors.status(f"planning “{task.instruction}” with {model} …"), \
                     open_planner(model, library, variant, validate is not False, repairs, ground) as planner:
-                plan = planner.plan(task.instruction, scene)
+                set_up(controller, task)  # planned in the kitchen as the task leaves it (a dirty mug)
+                plan = planner.plan(task.instruction, scene, controller.last_event.metadata["objects"])
             formula = plan.formula
         console = None if as_json else Console()
         if console is not None:

@@ -40,7 +40,7 @@ FLAGS = {
 }
 # kitchen.facts' readings → the domain's state predicates
 STATES = {word: word for word in ("hot", "cold", "room_temperature", "cooked", "sliced", "broken", "filled",
-                                  "used_up", "dirty", "on")} | {"open": "opened"}
+                                  "used_up", "dirty", "clean", "on")} | {"open": "opened"}
 DEPENDENT = {"StoveKnob", "Faucet"}  # chosen after what they serve
 BREWER, FLOOR, BASIN = "CoffeeMachine", "Floor", "SinkBasin"
 BREW, TAP = "coffee", "water"  # what a coffee machine and a faucet fill a cup with
