@@ -43,6 +43,7 @@ from cook2ltl.translate.formula import (
 )
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
 from cook2ltl.world.effects import template_text
+from cook2ltl.world.planner import reached
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
 
@@ -123,34 +124,6 @@ class Translation:
     validating: bool = False  # whether new reductions were checked in the kitchen
     world_start: object | None = None  # the world model's state before the first step (a world.logic.State)
     world_binding: Mapping[str, str] = field(default_factory=dict)  # THOR: the objectId each name stands for
-
-
-@dataclass(frozen=True)
-class Rates:
-    """Counts behind the two quality rates of one or more translations."""
-
-    written_lines: int  # plan lines the model wrote, repairs included
-    admissible_lines: int  # of those, the ones kept: calls of the primitive set or the library
-    new_reductions: int  # actions the model reduced
-    validated: int | None  # of those, the ones whose plan passed the kitchen check (None: nothing validated)
-
-    @property
-    def executability(self) -> float | None:
-        """The paper's executability: the share of the model's plan lines that are admissible."""
-        return self.admissible_lines / self.written_lines if self.written_lines else None
-
-    @property
-    def validated_rate(self) -> float | None:
-        """The stronger rate: the share of new reductions whose plan runs in the kitchen."""
-        return self.validated / self.new_reductions if self.new_reductions and self.validated is not None else None
-
-
-def rates(*translations: Translation) -> Rates:
-    results = [r for t in translations for step in t.steps for r in step.actions if r.reduction.source == Source.LLM]
-    outputs = [reduction for r in results for reduction in (*r.attempts, r.reduction)]
-    passed = sum(1 for r in results if r.validation is not None and r.validation.passed)
-    return Rates(sum(len(o.body) + len(o.dropped) for o in outputs), sum(len(o.body) for o in outputs),
-                 len(results), passed if any(t.validating for t in translations) else None)
 
 
 @dataclass(frozen=True)
@@ -262,8 +235,11 @@ class _Run:
         if primitive is not None and self.t.variant != Variant.AR_STAR:
             calls = direct_calls(action, primitive)
             if calls is not None:
+                effect = self._effect(action, write=False)
+                if done := self._needless(frame_index, action, effect):
+                    return done, None
                 self._count(primitive=1)
-                grounded = self._ground(action, calls, "recipe", self._effect(action, write=False))
+                grounded = self._ground(action, calls, "recipe", effect)
                 plan = grounded.plan if grounded else calls
                 result = ActionResult(frame_index, Reduction(action, calls, Source.PRIMITIVE), plan, check=grounded)
                 element = direct_element(action, calls, primitives) if plan == calls else plan_element(plan, primitives)
@@ -279,8 +255,11 @@ class _Run:
             body = instantiate(entry.body, placeholders(action)) if entry else None
             plan = self._expand(body) if body is not None else None
             if plan:
+                effect = self._effect(action, entry.effect)
+                if done := self._needless(frame_index, action, effect):
+                    return done, None
                 self._count(library_hits=1)
-                grounded = self._ground(action, plan, "library", self._effect(action, entry.effect))
+                grounded = self._ground(action, plan, "library", effect)
                 plan = grounded.plan if grounded else plan
                 reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
                 result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
@@ -290,6 +269,8 @@ class _Run:
         in_world = (self.t.grounding is not None and hasattr(self.t.model, "complete_lines")
                     and not self.t.settings.comments)  # the line grammar has no comment lines
         effect = self._effect(action)
+        if done := self._needless(frame_index, action, effect):
+            return done, None
         if in_world:
             checked = self._reduce_in_world(action, effect)
         else:
@@ -329,6 +310,13 @@ class _Run:
             start = grounding.start(names)
             self.world_state = self.world_start = start.state
             self.world_binding = dict(start.binding)
+
+    def _needless(self, frame_index: int, action: Action, effect: tuple) -> ActionResult | None:
+        """An action whose effect already holds where it is used (the mug is clean) needs no plan here, and
+        teaches the library nothing: no model call, no entry."""
+        if not effect or not all(reached(self.world_state, fact) for fact in effect):
+            return None
+        return ActionResult(frame_index, Reduction(action, (), Source.WORLD), (), check=self._ground(action, (), "", effect))
 
     def _effect(self, action: Action, stored: tuple[str, ...] | None = None, write: bool = True) -> tuple:
         """The states `action` must leave (a library entry's `stored` effect, else the table's, else the
@@ -381,7 +369,8 @@ class _Run:
             self.t.primitives.name, action.verb, action.signature) is not None
 
     def problems(self, results: list[ActionResult], formula: Formula) -> tuple[str, ...]:
-        found = [f"no admissible plan for {r.reduction.action.text()}" for r in results if not r.plan]
+        found = [f"no admissible plan for {r.reduction.action.text()}" for r in results
+                 if not r.plan and r.reduction.source != Source.WORLD]
         predicates = {state: 1 for state in self.t.primitives.states} | {ELAPSED: 1}
         predicates |= {value: 1 for r in results for value in r.reduction.action.values}
         predicates |= {c.args[1]: 1 for r in results for c in r.plan if c.is_wait}

@@ -174,3 +174,22 @@ def test_an_action_the_recipe_forbids_is_checked_but_leaves_the_kitchen_as_it_wa
     preheat, bake = (step.actions[0] for step in events[-1].translation.steps)
     assert events[-1].translation.steps[0].step.frames[0].negated and preheat.check.passed
     assert any(call.name == "turn_on" for call in bake.plan)  # nothing was switched on before
+
+
+def test_an_action_whose_effect_already_holds_needs_no_plan_and_teaches_nothing(kitchen, tmp_path):
+    from cook2ltl.library.store import Library
+    from cook2ltl.parse import parse_recipe
+    from cook2ltl.pipeline import Variant
+    from cook2ltl.reduce.model import Source
+
+    text = "Preheat the oven. Heat the oven."
+    spans = {"Preheat the oven.": SPANS["Preheat the oven."], "Heat the oven.": [("VERB", "Heat"), ("WHAT", "the oven")]}
+    model = ScriptedModel({"preheat": "turn_on(oven)\nwait(oven == hot)", "heat": "turn_off(oven)"})
+    library = Library(tmp_path / "library.sqlite")
+    translator = Translator(PRIMITIVES, model, library, Variant.AR_LIBRARY, grounding=kitchen)
+    events = list(translate(parse_recipe(text, ScriptedSpans(spans), ScriptedDependencies()), translator))
+    heat = events[-1].translation.steps[1]
+    assert heat.actions[0].reduction.source == Source.WORLD and heat.actions[0].check.passed
+    assert heat.actions[0].plan == () and not heat.problems
+    assert [entry.verb for entry in library.entries()] == ["preheat"]  # nothing learnt for heat
+    assert not any("def heat(" in prompt for prompt in model.prompts)

@@ -37,7 +37,8 @@ from cook2ltl.bench.refusals import refusals, refusals_note
 from cook2ltl.bench.results import pm, write
 from cook2ltl.domain import ParsedRecipe
 from cook2ltl.errors import UserError
-from cook2ltl.pipeline import Finished, Translation, Translator, Variant, rates, translate
+from cook2ltl.pipeline import Finished, Translation, Translator, Variant, translate
+from cook2ltl.translate.rates import rates
 from cook2ltl.reduce.model import Source
 from cook2ltl.reduce.validation import PlanValidator
 

@@ -11,11 +11,12 @@ from rich.console import Console
 from rich.text import Text
 
 from cook2ltl.cli.inputs import read_recipe
-from cook2ltl.pipeline import Translation, Variant, rates
+from cook2ltl.pipeline import Translation, Variant
+from cook2ltl.translate.rates import rates
 from cook2ltl.reduce.llm import DEFAULT_MODEL
 from cook2ltl.reduce.model import Source
 
-SOURCE_STYLE = {Source.PRIMITIVE: "green", Source.LIBRARY: "cyan", Source.LLM: "magenta"}
+SOURCE_STYLE = {Source.PRIMITIVE: "green", Source.LIBRARY: "cyan", Source.LLM: "magenta", Source.WORLD: "dim"}
 
 
 def translate_command(

@@ -121,6 +121,7 @@ class Source(StrEnum):
     PRIMITIVE = "primitive"  # the action is itself in 𝒜
     LIBRARY = "library"  # found in 𝔸
     LLM = "llm"  # reduced now
+    WORLD = "world"  # nothing to do: the world model says its effect already holds where it is used
 
 
 @dataclass(frozen=True)
