@@ -42,3 +42,15 @@ def test_the_planner_reaches_effects_that_need_more_than_the_goals_objects(scene
         assert step.applied, (call.text(), step.problem)
         state = step.state
     assert all(fact in state.facts for fact in effect)
+
+
+def test_washing_a_dirty_mug_asks_for_it_clean_and_the_planner_rinses_it():
+    action = act("wash", what="mug")
+    kitchen, state = start("FloorPlan7", action)
+    assert intended_effect(action, kitchen.world, state) == (("clean", "mug"),)  # a clean mug: nothing to do
+    dirty = state.changed({("clean", "mug")}, {("dirty", "mug")})
+    plan = kitchen.planner.plan(kitchen.world, dirty, (("clean", "mug"),))
+    assert plan and any(call.name == "turn_on" for call in plan)
+    for call in plan:
+        dirty = kitchen.world.apply(dirty, call).state
+    assert ("clean", "mug") in dirty.facts and ("dirty", "mug") not in dirty.facts
