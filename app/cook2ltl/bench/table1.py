@@ -181,7 +181,7 @@ def in_run_order(stage: Stage, seed: int) -> Stage:
 
 
 def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int | None, out: Path,
-               echo: Callable[[str], None], seed: int = FIRST_SEED) -> dict:
+               echo: Callable[[str], None], seed: int = FIRST_SEED, primitive_set: str = "recipe") -> dict:
     """Table I with the real models, runs seeded `seed`, `seed` + 1, …; the record and table are rewritten
     after each recipe."""
     from cook2ltl.reduce.llm import load_model
@@ -191,7 +191,7 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
     recipes = eval_recipes(limit)
     stage = parse_all(recipes)
     echo(f"{len(recipes)} recipes parsed in {stage.parse_seconds:.1f} s (models loaded in {stage.load_seconds:.1f} s)")
-    model, primitives = load_model(model_name), load_primitives("recipe")
+    model, primitives = load_model(model_name), load_primitives(primitive_set)
     started = time.perf_counter()
     model.complete("", "x", 'root ::= "x"', 1)  # the weights are read outside the timings
     record = {"model": model_name, "recipes": len(recipes), "primitives": primitives.name,
@@ -238,7 +238,8 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                     variant = Variant(name) if name in ("AR", "AR*") else Variant.AR_LIBRARY
                     library = {REPAIR: fresh, WORLD: own}.get(name, grown if variant == Variant.AR_LIBRARY else None)
                     translator = Translator(primitives, model, library, variant,
-                                            validator=None if name == WORLD else validator,
+                                            validator=None if name == WORLD and judged_by_world(primitives)
+                                            else validator,
                                             repairs=REPAIRS if name == REPAIR else 0, approved_only=name == APPROVED,
                                             grounding=world_grounding(primitives) if name == WORLD else None)
                     head = {"variant": name, "model": model.name, "seed": run_seed}
@@ -250,6 +251,12 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                 for library in (grown, fresh, own):
                     library.close()
     return rows
+
+
+def judged_by_world(primitives) -> bool:
+    """A set whose world has a kitchen of its own (the recipe set) is judged there, not by THOR stand-ins; the
+    AI2-THOR set's plans are still run in the kitchen."""
+    return primitives.world is not None and primitives.world.kitchen is not None
 
 
 def world_grounding(primitives):
