@@ -316,7 +316,8 @@ class _Run:
         teaches the library nothing: no model call, no entry."""
         if not effect or not all(reached(self.world_state, fact) for fact in effect):
             return None
-        return ActionResult(frame_index, Reduction(action, (), Source.WORLD), (), check=self._ground(action, (), "", effect))
+        checked = self._ground(action, (), "", effect)
+        return ActionResult(frame_index, Reduction(action, (), Source.WORLD), (), check=checked)
 
     def _effect(self, action: Action, stored: tuple[str, ...] | None = None, write: bool = True) -> tuple:
         """The states `action` must leave (a library entry's `stored` effect, else the table's, else the
