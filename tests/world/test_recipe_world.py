@@ -193,3 +193,12 @@ def test_an_action_whose_effect_already_holds_needs_no_plan_and_teaches_nothing(
     assert heat.actions[0].plan == () and not heat.problems
     assert [entry.verb for entry in library.entries()] == ["preheat"]  # nothing learnt for heat
     assert not any("def heat(" in prompt for prompt in model.prompts)
+
+
+def test_a_name_of_the_kitchens_kind_is_that_kind_and_a_source_is_no_place_to_end_in(kitchen):
+    state = kitchen.start(["medium_saucepan", "juice", "lemon"]).state
+    assert state.holds("vessel", "medium_saucepan") and not state.holds("food", "medium_saucepan")
+    squeeze = Action("squeeze", (Parameter("what", "the juice", "juice", "juice"),
+                                 Parameter("where", "from a lemon", "lemon", "lemon"),
+                                 Parameter("where", "into the saucepan", "medium_saucepan", "medium_saucepan")))
+    assert intended_effect(squeeze, kitchen.world, state) == (("in", "juice", "medium_saucepan"),)

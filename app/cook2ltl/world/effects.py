@@ -26,6 +26,7 @@ from cook2ltl.world.world import World
 
 SLOTS = ("what", "where", "how")
 NEVER = frozenset({"done", "ready"})
+SOURCE_WORDS = ("from ", "out of ", "off of ", "off ")
 _ATOM = re.compile(r"\s*([a-z][a-z0-9_-]*)\(([a-z0-9_, ]*)\)\s*\Z")
 
 Template = tuple[str, tuple[str, ...]]  # predicate, arguments (slots or objects)
@@ -87,7 +88,8 @@ def intended_effect(action: Action, world: World, state: State,
     templates = table_effect(action.verb) if templates is None else templates
     if templates is None:
         return None
-    slots = {slot: [p.value for p in action.parameters if p.category == slot] for slot in SLOTS}
+    slots = {slot: [p.value for p in action.parameters if p.category == slot and not _source(p.text)]
+             for slot in SLOTS}
     facts: dict[Fact, None] = {}
     for predicate, args in templates:
         choices = [slots[a] if a in SLOTS else [a] for a in args]
@@ -95,6 +97,12 @@ def intended_effect(action: Action, world: World, state: State,
             if all(v in state.objects for v in values) and len(set(values)) == len(values):
                 facts |= dict.fromkeys(_observed(world, state, predicate, values, slots))
     return tuple(facts)
+
+
+def _source(text: str) -> bool:
+    """Whether an argument names where something comes from ("from a lemon", "out of the pot"), which is no
+    place it ends in."""
+    return text.lower().lstrip().startswith(SOURCE_WORDS)
 
 
 def _observed(world: World, state: State, predicate: str, values: tuple[str, ...],

@@ -1,7 +1,8 @@
 """The state a recipe starts in, for a world whose kitchen is a TOML file (assets/kitchens/recipe-kitchen.toml).
 
-Every object of the file with its kinds, where it stands, and every other name the recipe uses as an
-ingredient on the countertop (a liquid one poured from its carton, never held).
+Every object of the file with its kinds, where it stands, and every other name the recipe uses: of the kinds
+of its head noun where the file has that (a medium_saucepan is a saucepan), else as an ingredient on the
+countertop (a liquid one poured from its carton, never held).
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ class KitchenFile:
     kit: tuple[str, ...]  # what the planner may use besides the objects a goal names
 
     def kinds_of(self, name: str) -> tuple[str, ...]:
+        name = self.known(name)
         if name in self.kinds:
             return self.kinds[name]
         last = name.rsplit("_", 1)[-1]
@@ -37,9 +39,15 @@ class KitchenFile:
         return (*self.ingredient_kinds, *(("meltable",) if last in self.meltable else ()))
 
     def place_of(self, name: str) -> str:
-        if name in self.start:
-            return self.start[name]
+        if self.known(name) in self.start:
+            return self.start[self.known(name)]
         return "" if "liquid" in self.kinds_of(name) else COUNTER
+
+    def known(self, name: str) -> str:
+        """The kitchen's own name for `name`: itself, else its head noun when the kitchen has that (a
+        medium_saucepan is a saucepan, a large_pot a pot); else `name`, an ingredient."""
+        last = name.rsplit("_", 1)[-1]
+        return name if name in self.kinds or last not in self.kinds else last
 
 
 @cache
