@@ -3,7 +3,8 @@
 ; Written for cook2ltl; read with unified-planning, planned with Fast Downward.
 ;
 ; Kinds are static predicates (an oven is openable, switchable and a heater at once); a vessel is what can
-; be poured into (a pot, a bowl, a blender; not a plate, an oven or the fridge).
+; be poured into (a pot, a bowl, a blender; not a plate, an oven or the fridge). Food also goes on or into
+; food (cream cheese spread on a tortilla, onion added to the meat, pasta into the water), and a cover on anything.
 ; `in` is the direct container (the pasta in the pot, the pot on the stovetop); the rules look two levels
 ; up, which is as deep as a kitchen nests (an egg in a bowl in the fridge).
 ; Processes act on `wait`: a running heater gets hot and heats what is in it (water boils, butter melts,
@@ -35,8 +36,8 @@
 
   (:action put
     :parameters (?x - thing ?y - thing)
-    :precondition (and (not (= ?x ?y)) (receptacle ?y) (not (holding ?y)) (not (in ?y ?x))
-      (or (holding ?x) (and (liquid ?x) (vessel ?y)))
+    :precondition (and (not (= ?x ?y)) (or (receptacle ?y) (covers ?x) (and (food ?x) (food ?y)))
+      (not (holding ?y)) (not (in ?y ?x)) (or (holding ?x) (and (liquid ?x) (or (vessel ?y) (food ?y))))
       (not (and (openable ?y) (not (opened ?y))))
       (not (enclosed ?y)))
     :effect (and (in ?x ?y)
@@ -46,7 +47,8 @@
 
   (:action pour
     :parameters (?x - thing ?y - thing)
-    :precondition (and (not (= ?x ?y)) (vessel ?y) (not (holding ?y)) (not (in ?y ?x))
+    :precondition (and (not (= ?x ?y)) (or (vessel ?y) (and (food ?x) (food ?y))) (not (holding ?y))
+      (not (in ?y ?x))
       (or (liquid ?x) (holding ?x) (exists (?c - thing) (and (holding ?c) (in ?x ?c))))
       (not (and (openable ?y) (not (opened ?y))))
       (not (enclosed ?y)))
