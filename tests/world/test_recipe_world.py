@@ -202,3 +202,12 @@ def test_a_name_of_the_kitchens_kind_is_that_kind_and_a_source_is_no_place_to_en
                                  Parameter("where", "from a lemon", "lemon", "lemon"),
                                  Parameter("where", "into the saucepan", "medium_saucepan", "medium_saucepan")))
     assert intended_effect(squeeze, kitchen.world, state) == (("in", "juice", "medium_saucepan"),)
+
+
+def test_food_goes_on_food_and_a_cover_on_anything_but_a_pot_never_into_the_cheese(kitchen):
+    state = kitchen.start(["cream_cheese", "tortilla", "mix"]).state
+    for goal in ((("in", "cream_cheese", "tortilla"),), (("covered", "mix"),)):
+        checked = check_plan(kitchen.world, state, (), goal, kitchen.planner)
+        assert checked.passed or checked.effect_reached, goal
+    holding_pot = kitchen.world.apply(state, Call("pick_up", ("pot",))).state
+    assert not kitchen.world.apply(holding_pot, Call("put", ("pot", "cream_cheese"))).applied
