@@ -30,7 +30,7 @@ from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.patterns import Element, sequenced_visit
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.parse.recipe import parse_recipe
-from cook2ltl.reduce.action import actions_of
+from cook2ltl.reduce.action import actions_of, known_objects
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders
 from cook2ltl.reduce.intents import Intents
 from cook2ltl.reduce.llm import LanguageModel
@@ -231,6 +231,7 @@ class _Run:
     def action(self, frame_index: int, action: Action) -> tuple[ActionResult, Element | None]:
         primitives = self.t.primitives
         self._count(actions=1)
+        action = action if self.world_state is None else known_objects(action, self.world_state.objects)
         primitive = primitives.get(action.verb)
         if primitive is not None and self.t.variant != Variant.AR_STAR:
             calls = direct_calls(action, primitive)

@@ -54,3 +54,12 @@ def test_washing_a_dirty_mug_asks_for_it_clean_and_the_planner_rinses_it():
     for call in plan:
         dirty = kitchen.world.apply(dirty, call).state
     assert ("clean", "mug") in dirty.facts and ("dirty", "mug") not in dirty.facts
+
+
+def test_an_object_the_kitchen_knows_only_by_its_head_noun_is_that_object():
+    from cook2ltl.reduce.action import known_objects
+
+    action = known_objects(act("wash", what="dirty_plate", where="sink_basin"), ("plate", "sink_basin", "mug"))
+    assert action.text() == "wash(plate, sink_basin)"
+    assert known_objects(act("wash", what="wine_bottle"), ("wine_bottle", "bottle")).text() == "wash(wine_bottle)"
+    assert known_objects(act("wash", what="blue_zebra"), ("plate",)).text() == "wash(blue_zebra)"

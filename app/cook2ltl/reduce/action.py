@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 
 from cook2ltl.domain import ARGUMENT_LABELS, Connective, Frame, Label, field_of
 from cook2ltl.reduce.model import Action, Parameter
@@ -17,6 +18,7 @@ CLAUSE_ENDS = frozenset("or and before after then while".split())
 # Leading words of a where or how that link it to the action: "in a pot", "with olive oil".
 LINKS = frozenset("into in with on onto to over using by from".split())
 _WORD = re.compile(r"[a-z0-9]+")
+OBJECTS = ("what", "where", "how")
 
 
 def actions_of(frame: Frame) -> tuple[Action, ...]:
@@ -27,6 +29,18 @@ def actions_of(frame: Frame) -> tuple[Action, ...]:
         return (Action(verb_identifier(frame.name), parameters),)
     others = tuple(p for p in parameters if p.category != "what")
     return tuple(Action(verb_identifier(frame.name), (what, *others)) for what in whats)
+
+
+def known_objects(action: Action, known: Collection[str]) -> Action:
+    """The action with each object the kitchen does not know by its name given its head noun's name where the
+    kitchen knows that one (the dirty_plate is the plate): the last word of a name is the thing it names."""
+    def known_as(parameter: Parameter) -> Parameter:
+        head = parameter.value.rsplit("_", 1)[-1]
+        if parameter.category not in OBJECTS or parameter.value in known or head not in known:
+            return parameter
+        return Parameter(parameter.category, parameter.text, head, head)
+
+    return Action(action.verb, tuple(known_as(p) for p in action.parameters))
 
 
 def verb_identifier(verb: str) -> str:
