@@ -114,10 +114,13 @@ def library_bound(stage: Stage, primitives) -> dict:
 
 
 def plan_admissibility(translation: Translation) -> tuple[int, int]:
-    """(admissible, inadmissible) actions of a recipe's generated plans."""
+    """(admissible, inadmissible) actions of a recipe's generated plans; an action the world model found
+    already done needs none and counts neither way."""
     admissible = inadmissible = 0
     for step in translation.steps:
         for result in step.actions:
+            if result.reduction.source == Source.WORLD:
+                continue
             admissible += len(result.plan)
             inadmissible += len(result.reduction.dropped) + (0 if result.plan else 1)
     return admissible, inadmissible
