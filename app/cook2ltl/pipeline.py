@@ -43,7 +43,7 @@ from cook2ltl.translate.formula import (
 )
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
 from cook2ltl.world.effects import template_text
-from cook2ltl.world.planner import reached
+from cook2ltl.world.planner import all_reached
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
 
@@ -315,7 +315,7 @@ class _Run:
     def _needless(self, frame_index: int, action: Action, effect: tuple) -> ActionResult | None:
         """An action whose effect already holds where it is used (the mug is clean) needs no plan here, and
         teaches the library nothing: no model call, no entry."""
-        if not effect or not all(reached(self.world_state, fact) for fact in effect):
+        if not effect or not all_reached(self.world_state, effect):
             return None
         checked = self._ground(action, (), "", effect)
         return ActionResult(frame_index, Reduction(action, (), Source.WORLD), (), check=checked)

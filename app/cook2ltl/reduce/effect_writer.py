@@ -18,6 +18,7 @@ from collections.abc import Mapping, Sequence
 
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Usage
+from cook2ltl.reduce.prompt import header
 from cook2ltl.world.effects import SLOTS, Template, parse_template, template_text
 from cook2ltl.world.logic import State
 from cook2ltl.world.world import World
@@ -39,10 +40,11 @@ def effect_prompt(table: Mapping[str, Sequence[Template]]) -> str:
     def plainest(verbs: list[str]) -> str:
         return min(verbs, key=lambda v: (len(table[v]), v.count("_"), order[v]))
 
+    single_object = {"what"} | _constants(table)
     shown: dict[str, Sequence[Template]] = {}
     for predicate in sorted({p for templates in table.values() for p, _ in templates}):
         fitting = [v for v, ts in table.items() if any(p == predicate for p, _ in ts)
-                   and all(set(args) <= {"what"} | _constants(table) for _, args in ts)]
+                   and all(set(args) <= single_object for _, args in ts)]
         if fitting:
             shown[plainest(fitting)] = table[plainest(fitting)]
     if none := [v for v, ts in table.items() if not ts]:
@@ -56,8 +58,6 @@ def effect_prompt(table: Mapping[str, Sequence[Template]]) -> str:
 def write_effect(action: Action, model: LanguageModel, world: World, state: State,
                  table: Mapping[str, Sequence[Template]]) -> tuple[tuple[Template, ...], Usage]:
     """The model's effect for `action`, as templates over its slots, and what writing it cost."""
-    from cook2ltl.reduce.prompt import header
-
     options = _atoms(action, world, state, table)
 
     def next_lines(text: str) -> list[str] | None:

@@ -19,7 +19,7 @@ from cook2ltl.reduce.prompt import build_prompt
 from cook2ltl.reduce.reduction import TOKENS_PER_LINE, ReductionSettings
 from cook2ltl.world.affordances import admissible_calls
 from cook2ltl.world.logic import Fact, State
-from cook2ltl.world.planner import reached
+from cook2ltl.world.planner import all_reached
 from cook2ltl.world.world import World
 
 REPEATS = 2  # the same line this many times in a row ends the plan: a greedy model is looping
@@ -45,7 +45,7 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Seq
             now = world.apply(now, call).state
             applied.append(call)
         options = admissible_calls(world, now, primitives, vocab.objects, vocab.states, vocab.durations)
-        if effect and _holds(now, effect):  # only tidying up now: lines that undo a change, keeping the effect
+        if effect and all_reached(now, effect):  # only tidying up now: lines that undo a change, keeping the effect
             changed = len(now.facts ^ state.facts)
             options = [call for call in options if _tidies(world.apply(now, call).state, state, changed, effect)]
         return [call.text() for call in options] or None
@@ -58,11 +58,8 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Seq
 def _tidies(after: State, start: State, changed: int, effect: Sequence[Fact]) -> bool:
     """Whether a line brings the kitchen back towards where the action found it (turns off what the plan turned
     on, closes what it opened) and keeps the effect."""
-    return len(after.facts ^ start.facts) < changed and _holds(after, effect)
+    return len(after.facts ^ start.facts) < changed and all_reached(after, effect)
 
-
-def _holds(state: State, effect: Sequence[Fact]) -> bool:
-    return all(reached(state, fact) for fact in effect)
 
 
 def _looping(calls) -> bool:

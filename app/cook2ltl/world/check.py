@@ -15,7 +15,7 @@ from typing import NamedTuple
 from cook2ltl.reduce.model import Call
 from cook2ltl.world.effects import fact_text
 from cook2ltl.world.logic import Fact, State
-from cook2ltl.world.planner import Planner, reached
+from cook2ltl.world.planner import Planner, all_reached, reached
 from cook2ltl.world.world import KEPT, World
 
 PLANNER = "planner"
@@ -92,7 +92,7 @@ def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequenc
                 written_by.append(PLANNER)
     elif missing:
         problems.append(f"the plan does not reach {', '.join(fact_text(f) for f in missing)}")
-    done = all(reached(state, fact) for fact in effect)
+    done = all_reached(state, effect)
     if done and effect:
         kept, written_by, state = pruned(world, start, list(zip(kept, written_by)), effect)
     return PlanCheck(applicable, tuple(effect), done, tuple(kept), tuple(written_by), tuple(problems), state)
@@ -108,7 +108,7 @@ def pruned(world: World, start: State, lines: list[tuple[Call, str]], effect: Se
     index = 0
     while index < len(lines):
         rest, after = _replay(world, states[index], lines[index + 1:])
-        if all(reached(after[-1], f) for f in effect) and _changes(after[-1], start) <= _changes(states[-1], start):
+        if all_reached(after[-1], effect) and _changes(after[-1], start) <= _changes(states[-1], start):
             lines, states = lines[:index] + rest, states[:index + 1] + after[1:]
         else:
             index += 1

@@ -47,13 +47,17 @@ class FastDownward:
         self._lock = threading.Lock()
 
     def plan(self, world: World, state: State, goal: Sequence[Fact]) -> tuple[Call, ...] | None:
-        if all(reached(state, fact) for fact in goal):
+        if all_reached(state, goal):
             return ()
         kit = None if self.kit is None else frozenset().union(
             self.kit.get("*", ()), *(self.kit.get(fact[0], ()) for fact in goal))
         with self._lock:
             actions = _solve(world.domain.path, focus(state, goal, kit), tuple(goal), self.time_limit)
         return None if actions is None else as_calls(world, state, goal, actions)
+
+
+def all_reached(state: State, goal: Sequence[Fact]) -> bool:
+    return all(reached(state, fact) for fact in goal)
 
 
 def reached(state: State, fact: Fact) -> bool:
