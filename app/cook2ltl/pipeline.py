@@ -37,7 +37,7 @@ from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand
 from cook2ltl.reduce.repair import Checked, reduce_checked
-from cook2ltl.reduce.validation import PlanValidator, Validation
+from cook2ltl.reduce.validation import PlanValidator, RecipeSoFar, Validation
 from cook2ltl.translate.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
@@ -183,6 +183,8 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
                 result, element = state.action(frame_index, action)
                 if frame.negated:  # checked where the recipe is, but never done: the kitchen stays as it was
                     state.world_state = kitchen
+                else:
+                    state.ran.extend(result.plan)
                 results.append(result)
                 done += 1
                 yield ActionDone(step.index, result, done)
@@ -224,6 +226,8 @@ class _Run:
         self.verbs: list[LibraryVerb] = []
         self.world_state = self.world_start = None  # the world model's state: where the recipe has got to
         self.world_binding: dict[str, str] = {}  # in a THOR kitchen, the objectId each name stands for
+        self.scene = ""  # that THOR kitchen's scene
+        self.ran: list[Call] = []  # the lines of the recipe's actions so far, as a kitchen check replays them
         self.intents = None if translator.grounding is None else Intents(
             translator.grounding.world, translator.model if hasattr(translator.model, "complete_lines") else None)
         self._refresh()
@@ -284,7 +288,7 @@ class _Run:
             changed = grounded.plan != plan  # lines dropped or completed: the checked plan is what is learnt
             plan = grounded.plan
             if self.t.validator is not None and plan and (in_world or changed):
-                validation = self.t.validator.validate(action, plan)  # the plan as it will run, in THOR
+                validation = self.t.validator.validate(action, plan, self._so_far())  # as it will run, in THOR
             elif self.t.validator is None:
                 validation = world_validation(grounded)
             checked = replace(checked, plan=plan, validation=validation)
@@ -307,10 +311,15 @@ class _Run:
         """The kitchen before the first step, holding every object the recipe names."""
         grounding = self.t.grounding
         if grounding is not None:
-            names = [o for step in parsed.steps for frame in step.frames for a in actions_of(frame) for o in a.objects]
-            start = grounding.start(names)
+            actions = [a for step in parsed.steps for frame in step.frames for a in actions_of(frame)]
+            places = {p.value for a in actions for p in a.parameters if p.category == "where"}
+            start = grounding.start([o for a in actions for o in a.objects], places)
             self.world_state = self.world_start = start.state
-            self.world_binding = dict(start.binding)
+            self.world_binding, self.scene = dict(start.binding), start.scene
+
+    def _so_far(self) -> RecipeSoFar | None:
+        """Where the recipe has got to in its THOR kitchen, for the kitchen check; None outside one."""
+        return RecipeSoFar(self.scene, self.world_binding, tuple(self.ran)) if self.scene else None
 
     def _needless(self, frame_index: int, action: Action, effect: tuple) -> ActionResult | None:
         """An action whose effect already holds where it is used (the mug is clean) needs no plan here, and

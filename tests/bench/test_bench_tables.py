@@ -35,7 +35,7 @@ class OneLinersFail:
     def __init__(self):
         self.checked = []
 
-    def validate(self, action, plan):
+    def validate(self, action, plan, so_far=None):
         self.checked.append(action.verb)
         return Validation(len(plan) > 1, () if len(plan) > 1 else (LineProblem(1, plan[0].text(), "too short"),),
                           "FloorPlan1", 0.25)

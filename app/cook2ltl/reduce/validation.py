@@ -23,6 +23,7 @@ cannot be checked (`unsupported`).
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -65,8 +66,18 @@ class Validation:
         return "unchecked" if not self.checked else "passed" if self.passed else "failed"
 
 
+@dataclass(frozen=True)
+class RecipeSoFar:
+    """Where a recipe has got to in a THOR kitchen: the scene, the object each name stands for, and the lines
+    its earlier actions ran. A plan checked here runs after them, as it will in the recipe."""
+
+    scene: str
+    binding: Mapping[str, str]
+    before: tuple[Call, ...] = ()
+
+
 class PlanValidator(Protocol):
-    def validate(self, action: Action, plan: tuple[Call, ...]) -> Validation: ...
+    def validate(self, action: Action, plan: tuple[Call, ...], so_far: RecipeSoFar | None = None) -> Validation: ...
 
     def close(self) -> None: ...
 
@@ -87,12 +98,14 @@ class KitchenValidator:
         self.primitives = primitives
         self._controller = None
 
-    def validate(self, action: Action, plan: tuple[Call, ...]) -> Validation:
+    def validate(self, action: Action, plan: tuple[Call, ...], so_far: RecipeSoFar | None = None) -> Validation:
+        """The plan run alone, in the kitchen that fits it best with its shut-away things set out, or, given
+        `so_far`, after the recipe's earlier lines in the recipe's own kitchen."""
         from cook2ltl.kitchen.executor import liquids
-        from cook2ltl.reduce.validation_scene import build_frame
+        from cook2ltl.reduce.validation_scene import Frame, build_frame
 
         started = time.perf_counter()
-        frame = build_frame(plan, liquids())
+        frame = build_frame(plan, liquids()) if so_far is None else Frame(so_far.scene, so_far.binding)
         if frame.missing:
             problem = LineProblem(0, action.text(), f"not checked: the THOR kitchen has nothing that can stand for "
                                                     f"{', '.join(frame.missing)}")
@@ -101,7 +114,7 @@ class KitchenValidator:
         kitchen.reset(frame.scene)
         from cook2ltl.reduce.validation_run import PlanRun
 
-        problems = PlanRun(kitchen, frame).run(action, plan)
+        problems = PlanRun(kitchen, frame).run(action, plan, None if so_far is None else so_far.before)
         return Validation(not problems, problems, frame.scene, time.perf_counter() - started)
 
     def close(self) -> None:

@@ -33,18 +33,27 @@ class PlanRun:
         self.binding = Binding(frame.bound)
         self.scene = frame.scene
 
-    def run(self, action: Action, plan: tuple[Call, ...]) -> tuple[LineProblem, ...]:
-        self._set_out(plan_names(plan))
+    def run(self, action: Action, plan: tuple[Call, ...], before: tuple[Call, ...] | None = None
+            ) -> tuple[LineProblem, ...]:
+        """The plan's problems, line by line. `before`: the recipe's earlier lines, run first (what they could
+        not do is not this plan's problem); without them the plan's shut-away things are set out first."""
+        if before is None:
+            self._set_out(plan_names(plan))
+        for call in before or ():
+            self._attempt(call)
         problems = []
         for line, call in enumerate(plan, 1):
-            try:
-                error = self._line(call)
-            except UnknownObject as missing:
-                error = missing.message
+            error = self._attempt(call)
             if error:
                 problems.append(LineProblem(line, call.text(), self._named(error)))
         problems.extend(self._goal(action))
         return tuple(problems)
+
+    def _attempt(self, call: Call) -> str:
+        try:
+            return self._line(call)
+        except UnknownObject as missing:
+            return missing.message
 
     def _set_out(self, names: tuple[str, ...]) -> None:
         """Mise en place, as the paper assumes: a thing the plan names that is shut away (the egg in the fridge)

@@ -20,7 +20,8 @@ The kitchen chosen is the one of the 30 where the most names find an object (tie
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections import Counter
+from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass
 from functools import cache
 
@@ -43,8 +44,11 @@ NO_COUNTERPART = frozenset(
 )
 # Food types that stand for a recipe's ingredients, the most widely placeable first.
 FOODS = ("Potato", "Apple", "Tomato", "Egg", "Lettuce", "Bread")
+# When those run out, small things the agent can carry stand for ingredients: the order of a plan's steps is
+# still checked (picked up before put), their cooking only partly (they get hot, never sliced).
+PORTABLES = ("SaltShaker", "PepperShaker", "Bottle", "WineBottle", "DishSponge", "PaperTowelRoll", "SoapBottle")
 # What a mixture things are put into stands for.
-CONTAINERS = ("Bowl", "Pot", "Pan", "Plate")
+CONTAINERS = ("Bowl", "Pot", "Pan", "Plate", "Cup", "Mug")
 INTO = ("put", "pour")  # primitives whose second argument is where the first goes
 
 
@@ -69,49 +73,63 @@ def plan_names(plan: Iterable[Call]) -> tuple[str, ...]:
 
 def build_frame(plan: tuple[Call, ...], liquids: frozenset[str]) -> Frame:
     """The best kitchen for the plan and the stand-ins bound in it."""
-    from cook2ltl.kitchen.scenes import scene_names
-
     names = [n for n in plan_names(plan) if n not in liquids]
     missing = tuple(n for n in names if n in NO_COUNTERPART)
     if missing:
         return Frame("", {}, missing)
-    into = {call.args[1] for call in plan if call.name in INTO and len(call.args) == 2}
-    frames = [_frame_in(scene, names, into) for scene in scene_names()]
+    return best_frame(names, {call.args[1] for call in plan if call.name in INTO and len(call.args) == 2})
+
+
+def best_frame(names: Iterable[str], into: Collection[str]) -> Frame:
+    """The kitchen where most of `names` find an object or a stand-in (`into`: the names things go into), and
+    the stand-ins bound in it; a name of `NO_COUNTERPART` stays missing."""
+    from cook2ltl.kitchen.scenes import scene_names
+
+    names = [n for n in dict.fromkeys(names) if n not in NO_COUNTERPART]
+    frames = [frame_in(scene, names, into) for scene in scene_names()]
     return min(frames, key=lambda f: (len(f.missing), f.hidden, _number(f.scene)))
 
 
-def _frame_in(scene: str, names: list[str], into: set[str]) -> Frame:
+def frame_in(scene: str, names: list[str], into: Collection[str]) -> Frame:
     from cook2ltl.kitchen.names import types_for
 
     objects = _objects(scene)
     available = {object_type for object_type, _ in objects}
-    direct = [n for n in names if types_for(n, available)]  # resolved while the plan runs
+    left = Counter(object_type for object_type, _ in objects)  # objects of each type no name has yet
+    direct = []  # names bound to an object of their own type later (by the kitchen, or the world model)
+    for name in names:
+        free = next((t for t in types_for(name, available) if left[t]), None)
+        if free is not None:
+            left[free] -= 1
+            direct.append(name)
     named_types = {t for n in direct for t in types_for(n, available)}
-    taken: set[str] = set()
     bound: dict[str, str] = {}
     missing: list[str] = []
     for name in names:
         if name in direct:
             continue
-        if types_for(name, _all_types()):
+        own = types_for(name, _all_types())
+        if own and not types_for(name, available):
             wanted: tuple[str, ...] = ()  # a THOR object other kitchens have: missing here
-        else:
-            kinds = CONTAINERS if name in into else FOODS
-            wanted = STAND_INS.get(name) or tuple(t for t in kinds if t not in named_types)
-        chosen = _first_free(objects, wanted, taken)
+        else:  # an ingredient or a mixture; or one more bowl than the kitchen has: a container of another type
+            kinds = CONTAINERS if name in into or set(own) & set(CONTAINERS) else FOODS + PORTABLES
+            wanted = (STAND_INS.get(name) or STAND_INS.get(name.rsplit("_", 1)[-1])  # a medium_saucepan is a saucepan
+                      or tuple(t for t in kinds if t not in named_types))
+        chosen = _first_free(objects, wanted, left, set(bound.values()))
         if chosen is None:
             missing.append(name)
         else:
-            taken.add(chosen)
             bound[name] = chosen
     hidden = sum(1 for object_id in bound.values() if object_id in _shut_away(scene))
     return Frame(scene, bound, tuple(missing), hidden)
 
 
-def _first_free(objects: tuple[tuple[str, str], ...], wanted: tuple[str, ...], taken: set[str]) -> str | None:
+def _first_free(objects: tuple[tuple[str, str], ...], wanted: tuple[str, ...], left: Counter[str],
+                taken: set[str]) -> str | None:
     for object_type in wanted:
         for kind, object_id in objects:
-            if kind == object_type and object_id not in taken:
+            if kind == object_type and left[kind] and object_id not in taken:
+                left[kind] -= 1
                 return object_id
     return None
 

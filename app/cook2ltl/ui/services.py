@@ -94,9 +94,9 @@ class OnePlanAtATime:
         self.validator = validator
         self._lock = threading.Lock()
 
-    def validate(self, action, plan):
+    def validate(self, action, plan, so_far=None):
         with self._lock:
-            return self.validator.validate(action, plan)
+            return self.validator.validate(action, plan, so_far)
 
     def close(self) -> None:
         with self._lock:

@@ -51,6 +51,7 @@ class Start(NamedTuple):
 
     state: State
     binding: Mapping[str, str]
+    scene: str = ""  # the THOR scene the binding is in; "" for a kitchen file or a running kitchen
 
 
 @dataclass(frozen=True)
@@ -59,7 +60,7 @@ class Grounding:
 
     world: World
     planner: Planner | None
-    start: Callable[[Iterable[str]], Start]  # given the recipe's names
+    start: Callable[..., Start]  # given the recipe's names and the places things go into
 
 
 def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequence[Fact], planner: Planner | None,

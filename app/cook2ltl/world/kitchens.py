@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
 from cook2ltl.reduce.model import PrimitiveSet
 from cook2ltl.world.check import Grounding, Start
@@ -33,16 +33,33 @@ def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: s
         planner = FastDownward(kit)
     planner = planner if complete else None
 
-    def start(names: Iterable[str]) -> Start:
+    def start(names: Iterable[str], places: Collection[str] = ()) -> Start:
         names = tuple(names)
         wanted = tuple(dict.fromkeys((*primitives.objects, *names)))
         if spec.kitchen is not None:
             from cook2ltl.world.recipe_kitchen import kitchen_state
 
             return Start(kitchen_state(spec.kitchen, wanted), {})
-        from cook2ltl.world.thor_kitchens import best_scene, scene_objects, scene_start
+        from cook2ltl.world.thor_kitchens import scene_start
 
-        metadata = objects() if objects is not None else scene_objects(scene or best_scene(names))
-        return Start(*scene_start(metadata, wanted))
+        spare = [n for n in primitives.objects if n not in names]
+        if objects is not None:  # a running kitchen: its own objects only
+            return Start(*scene_start(objects(), wanted, spare=spare))
+        return thor_start(names, places, wanted, spare, scene)
 
     return Grounding(world, planner, start)
+
+
+def thor_start(names: tuple[str, ...], places: Collection[str], wanted: tuple[str, ...], spare: list[str],
+               scene: str | None) -> Start:
+    """A THOR kitchen for a recipe, as the kitchen check binds it: the scene where most of the recipe's names find
+    an object or a stand-in (an ingredient THOR lacks is a food object, a mixture things go into a bowl, a
+    saucepan a pot: `validation_scene`), so the world observes what is done to them."""
+    from cook2ltl.kitchen.executor import liquids
+    from cook2ltl.reduce.validation_scene import best_frame, frame_in
+    from cook2ltl.world.thor_kitchens import scene_objects, scene_start
+
+    own = [n for n in names if n not in liquids()]
+    frame = frame_in(scene, own, places) if scene else best_frame(own, places)
+    state, binding = scene_start(scene_objects(frame.scene), wanted, frame.bound, spare)
+    return Start(state, binding, frame.scene)

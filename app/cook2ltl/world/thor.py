@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 
 from cook2ltl.kitchen.facts import PREDICATES
 from cook2ltl.kitchen.names import Binding, Obj, key, known_types, objects_named, piece_types, shut_away, snake_case
@@ -47,13 +47,14 @@ BREW, TAP = "coffee", "water"  # what a coffee machine and a faucet fill a cup w
 
 
 def thor_state(objects: Sequence[Mapping], names: Iterable[str], rules: TypeRules,
-               bound: Mapping[str, str] = {}) -> tuple[State, dict[str, str]]:
+               bound: Mapping[str, str] = {}, spare: Collection[str] = ()) -> tuple[State, dict[str, str]]:
     """The world state of the kitchen whose metadata objects are `objects`, over `names` (bound as
-    `bound` says where it says so), and the objectId each of its objects stands for."""
+    `bound` says where it says so; the `spare` ones, words a plan may use but the recipe does not, only
+    after the others), and the objectId each of its objects stands for."""
     scene = _Scene(objects)
     given = [n for n in dict.fromkeys(names) if n not in rules.liquids]
     binding = {n: i for n, i in bound.items() if n not in rules.liquids}
-    _choose(scene, [n for n in given if n not in binding], binding)
+    _choose(scene, [n for n in given if n not in binding], binding, set(spare))
     _add_extras(scene, given, binding)
     liquids = sorted(rules.liquids)
     facts = _facts(scene, binding, liquids, rules)
@@ -108,7 +109,7 @@ def _whole(o: Mapping) -> str:
     return head if head and tail.startswith(o["objectType"] + "_") else o["objectId"]
 
 
-def _choose(scene: _Scene, names: list[str], binding: dict[str, str]) -> None:
+def _choose(scene: _Scene, names: list[str], binding: dict[str, str], spare: set[str]) -> None:
     """Bind each name: things first, then fixtures (which then prefer holding a named thing), then knobs
     and faucets (which prefer serving a named burner or sink); a name that is its type's own word
     (sink_basin) chooses before one standing in for it (sink)."""
@@ -118,7 +119,7 @@ def _choose(scene: _Scene, names: list[str], binding: dict[str, str]) -> None:
     role = {n: 2 if types[n] and set(types[n]) <= DEPENDENT else 0 if any(o.get("pickupable") for o in unbound[n])
             else 1 for n in names}
     own = {n: types[n][0] for n in names if types[n] and key(types[n][0]) == key(n)}
-    for name in sorted(names, key=lambda n: (role[n], n not in own, names.index(n))):
+    for name in sorted(names, key=lambda n: (role[n], n in spare, n not in own, names.index(n))):
         taken = set(binding.values())
         candidates = [o for o in unbound[name] if not _clashes(_whole(o), taken)]
         # `knife` takes a Knife, not the ButterKnife that `butter_knife` is the word for, while it can
