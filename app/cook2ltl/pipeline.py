@@ -42,7 +42,7 @@ from cook2ltl.translate.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
-from cook2ltl.world.effects import template_text
+from cook2ltl.world.effects import cast, template_text
 from cook2ltl.world.planner import all_reached
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
@@ -312,8 +312,7 @@ class _Run:
         grounding = self.t.grounding
         if grounding is not None:
             actions = [a for step in parsed.steps for frame in step.frames for a in actions_of(frame)]
-            places = {p.value for a in actions for p in a.parameters if p.category == "where"}
-            start = grounding.start([o for a in actions for o in a.objects], places)
+            start = grounding.start(*cast(actions, grounding.world))
             self.world_state = self.world_start = start.state
             self.world_binding, self.scene = dict(start.binding), start.scene
 

@@ -136,3 +136,19 @@ def test_a_verb_implies_its_goal_state(validators):
         "chop(tomato): goal state not reached: tomato is not sliced at the end",)
     assert check(validators, "ai2thor", chop, "pick_up(knife)\nslice(tomato)").passed
     assert check(validators, "ai2thor", action("wash", ("what", "the tomato")), "pick_up(tomato)").passed
+
+
+def test_a_plan_runs_where_the_recipe_has_got_to(validators):
+    """Given the recipe so far, the plan runs after the recipe's earlier lines, on the world's binding: the
+    tomato already held can be put down, and nothing is set out for it."""
+    from cook2ltl.reduce.validation import RecipeSoFar
+    from cook2ltl.world.kitchens import grounding
+
+    start = grounding(load_primitives("ai2thor")).start(["penne", "pot"], {"pot"})
+    so_far = RecipeSoFar(start.scene, start.binding, read_body("pick_up(penne)")[0])
+    add = action("add", ("what", "penne"), ("where", "pot"))
+    validator = validators("ai2thor")
+    assert validator.validate(add, read_body("put(penne, pot)")[0], so_far).passed
+    alone = validator.validate(add, read_body("put(penne, pot)")[0], RecipeSoFar(start.scene, start.binding))
+    assert [p.line for p in alone.problems] == [1]
+    assert validator.validate(add, read_body("pick_up(penne)\nput(penne, pot)")[0], so_far).problems[0].line == 1

@@ -5,7 +5,8 @@ the plan (library verbs expanded down to primitives) through ai2thor's own Contr
 kitchen, in the kitchen that has most of its objects (see `validation_scene` for the stand-ins), and
 reports every line THOR refuses with THOR's reason: a put before any pick up, a put into a closed fridge,
 a slice without a knife in hand, an object the kitchen does not have. A refused line changes nothing and
-the run goes on, so a plan gets every problem at once.
+the run goes on, so a plan gets every problem at once. Translating in the world model, a plan runs where the
+recipe has got to (`RecipeSoFar`): in the recipe's kitchen, after the lines of its earlier actions.
 
 Goal states are checked where the plan or action states one the kitchen can observe: `wait(potato ==
 hot)` waits (THOR's Pass) up to `MAX_WAITS` times for the potato to be hot, and an action whose time or

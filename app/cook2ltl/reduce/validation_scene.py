@@ -11,11 +11,14 @@ fitting THOR type, so THOR's own rules judge the plan's order of actions:
 * a word of `NO_COUNTERPART` (a blender, a grater) has nothing that could stand for it: the plan is
   not checked, and says why;
 * any other name is an ingredient and stands for a food object the plan does not name itself
-  (a Potato, an Apple …): it must be picked up before it is put somewhere, cut with a knife in hand;
-  but an ingredient that things are put or poured into (the mix, the batter) is a container to the
-  kitchen: it stands for a Bowl, a Pot …
+  (a Potato, an Apple …, then a small thing the agent can carry): it must be picked up before it is put
+  somewhere, cut with a knife in hand; but an ingredient that things are put or poured into (the mix, the
+  batter) is a container to the kitchen: it stands for a Bowl, a Pot …;
+* a name beyond what the kitchen has of its type (a second bowl) stands for another container or food.
 
 The kitchen chosen is the one of the 30 where the most names find an object (ties: the lowest number).
+A whole recipe gets one such kitchen (`best_frame`): the world model binds the recipe's names in it the
+same way, so the kitchen check and the world model judge the same objects.
 """
 
 from __future__ import annotations
@@ -80,17 +83,19 @@ def build_frame(plan: tuple[Call, ...], liquids: frozenset[str]) -> Frame:
     return best_frame(names, {call.args[1] for call in plan if call.name in INTO and len(call.args) == 2})
 
 
-def best_frame(names: Iterable[str], into: Collection[str]) -> Frame:
-    """The kitchen where most of `names` find an object or a stand-in (`into`: the names things go into), and
-    the stand-ins bound in it; a name of `NO_COUNTERPART` stays missing."""
+def best_frame(names: Iterable[str], into: Collection[str], asks: Mapping[str, Collection[str]] = {}) -> Frame:
+    """The kitchen where most of `names` find an object or a stand-in (`into`: the names things go into;
+    `asks`: the states a name must be able to take, `cooked`, `sliced`), and the stand-ins bound in it; a name
+    of `NO_COUNTERPART` stays missing."""
     from cook2ltl.kitchen.scenes import scene_names
 
     names = [n for n in dict.fromkeys(names) if n not in NO_COUNTERPART]
-    frames = [frame_in(scene, names, into) for scene in scene_names()]
+    frames = [frame_in(scene, names, into, asks) for scene in scene_names()]
     return min(frames, key=lambda f: (len(f.missing), f.hidden, _number(f.scene)))
 
 
-def frame_in(scene: str, names: list[str], into: Collection[str]) -> Frame:
+def frame_in(scene: str, names: list[str], into: Collection[str], asks: Mapping[str, Collection[str]] = {}
+             ) -> Frame:
     from cook2ltl.kitchen.names import types_for
 
     objects = _objects(scene)
@@ -113,8 +118,10 @@ def frame_in(scene: str, names: list[str], into: Collection[str]) -> Frame:
             wanted: tuple[str, ...] = ()  # a THOR object other kitchens have: missing here
         else:  # an ingredient or a mixture; or one more bowl than the kitchen has: a container of another type
             kinds = CONTAINERS if name in into or set(own) & set(CONTAINERS) else FOODS + PORTABLES
+            able = _able(scene)  # the chicken to be fried is a Potato rather than an Apple, while one is left
             wanted = (STAND_INS.get(name) or STAND_INS.get(name.rsplit("_", 1)[-1])  # a medium_saucepan is a saucepan
-                      or tuple(t for t in kinds if t not in named_types))
+                      or tuple(sorted((t for t in kinds if t not in named_types),
+                                      key=lambda t: len(set(asks.get(name, ())) - able.get(t, set())))))
         chosen = _first_free(objects, wanted, left, set(bound.values()))
         if chosen is None:
             missing.append(name)
@@ -142,6 +149,22 @@ def _objects(scene: str) -> tuple[tuple[str, str], ...]:
 
     things = sorted(load_scene(scene).objects.values(), key=lambda t: t.object_id in _shut_away(scene))
     return tuple((t.object_type, t.object_id) for t in things)
+
+
+@cache
+def _able(scene: str) -> dict[str, set[str]]:
+    """Which of the states a recipe asks (sliced, cooked) each object type of the kitchen can take: cooked
+    also when its slices can be (bread)."""
+    from cook2ltl.kitchen.scenes import load_scene, load_type_rules
+
+    slicing = load_type_rules().slicing
+    able: dict[str, set[str]] = {}
+    for thing in load_scene(scene).objects.values():
+        rule = slicing.get(thing.object_type)
+        states = {"sliced"} if "sliceable" in thing.abilities else set()
+        states |= {"cooked"} if "cookable" in thing.abilities or (rule and rule.cookable) else set()
+        able.setdefault(thing.object_type, set()).update(states)
+    return able
 
 
 @cache

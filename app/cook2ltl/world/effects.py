@@ -84,7 +84,8 @@ def intended_effect(action: Action, world: World, state: State,
                     templates: Sequence[Template] | None = None) -> tuple[Fact, ...] | None:
     """The facts `action` must make true, in `world`'s predicates, over objects of `state`: `templates` (an
     entry's own), else the table's; None when the table does not know the verb. Atoms the world cannot
-    observe or whose objects it lacks are left out."""
+    observe, whose objects it lacks, or that no action could make true there (`in(mix, ribs)` in THOR, where
+    food holds nothing) are left out."""
     templates = table_effect(action.verb) if templates is None else templates
     if templates is None:
         return None
@@ -95,8 +96,25 @@ def intended_effect(action: Action, world: World, state: State,
         choices = [slots[a] if a in SLOTS else [a] for a in args]
         for values in product(*choices):
             if all(v in state.objects for v in values) and len(set(values)) == len(values):
-                facts |= dict.fromkeys(_observed(world, state, predicate, values, slots))
+                observed = _observed(world, state, predicate, values, slots)
+                facts |= dict.fromkeys(fact for fact in observed if world.possible(state, fact))
     return tuple(facts)
+
+
+def cast(actions: Sequence[Action], world: World) -> tuple[list[str], set[str], dict[str, set[str]]]:
+    """What a recipe asks of its names, for choosing the kitchen's things: the names, in order; those things
+    are put into; and the states of the world each is to take by the table's effects (the chicken is fried:
+    cooked)."""
+    names = [o for action in actions for o in action.objects]
+    places = {p.value for action in actions for p in action.parameters if p.category == "where"}
+    asks: dict[str, set[str]] = {}
+    for action in actions:
+        for predicate, args in table_effect(action.verb) or ():
+            state = world.predicate(predicate) if len(args) == 1 and args[0] in SLOTS else None
+            for p in action.parameters if state else ():
+                if p.category == args[0]:
+                    asks.setdefault(p.value, set()).add(state)
+    return names, places, asks
 
 
 def _source(text: str) -> bool:

@@ -18,8 +18,9 @@ def world_of(primitives: PrimitiveSet) -> World | None:
 
 def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: str | None = None,
               complete: bool = True, objects: Callable[[], Sequence[Mapping]] | None = None) -> Grounding | None:
-    """The set's world, the planner that completes plans (`complete`) and its start: the kitchen file with the
-    recipe's names as ingredients, or a THOR kitchen: `objects()` (the metadata of a running kitchen, after a
+    """The set's world, the planner that completes plans (`complete`) and its start (given the recipe's names,
+    those things go into, and the states each must take): the kitchen file with the recipe's names as
+    ingredients, or a THOR kitchen: `objects()` (the metadata of a running kitchen, after a
     task's setup), else the scene `scene`, else the scene with most of the names."""
     world = world_of(primitives)
     if world is None:
@@ -33,7 +34,7 @@ def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: s
         planner = FastDownward(kit)
     planner = planner if complete else None
 
-    def start(names: Iterable[str], places: Collection[str] = ()) -> Start:
+    def start(names: Iterable[str], places: Collection[str] = (), asks: Mapping[str, Collection[str]] = {}) -> Start:
         names = tuple(names)
         wanted = tuple(dict.fromkeys((*primitives.objects, *names)))
         if spec.kitchen is not None:
@@ -45,21 +46,22 @@ def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: s
         spare = [n for n in primitives.objects if n not in names]
         if objects is not None:  # a running kitchen: its own objects only
             return Start(*scene_start(objects(), wanted, spare=spare))
-        return thor_start(names, places, wanted, spare, scene)
+        return thor_start(names, places, asks, wanted, spare, scene)
 
     return Grounding(world, planner, start)
 
 
-def thor_start(names: tuple[str, ...], places: Collection[str], wanted: tuple[str, ...], spare: list[str],
-               scene: str | None) -> Start:
+def thor_start(names: tuple[str, ...], places: Collection[str], asks: Mapping[str, Collection[str]],
+               wanted: tuple[str, ...], spare: list[str], scene: str | None) -> Start:
     """A THOR kitchen for a recipe, as the kitchen check binds it: the scene where most of the recipe's names find
     an object or a stand-in (an ingredient THOR lacks is a food object, a mixture things go into a bowl, a
-    saucepan a pot: `validation_scene`), so the world observes what is done to them."""
+    saucepan a pot: `validation_scene`; one that can take the states `asks` names), so the world observes
+    what is done to them."""
     from cook2ltl.kitchen.executor import liquids
     from cook2ltl.reduce.validation_scene import best_frame, frame_in
     from cook2ltl.world.thor_kitchens import scene_objects, scene_start
 
     own = [n for n in names if n not in liquids()]
-    frame = frame_in(scene, own, places) if scene else best_frame(own, places)
+    frame = frame_in(scene, own, places, asks) if scene else best_frame(own, places, asks)
     state, binding = scene_start(scene_objects(frame.scene), wanted, frame.bound, spare)
     return Start(state, binding, frame.scene)

@@ -163,12 +163,13 @@ def _join(free: list[str], facts: list[Atom], state: State, env: dict[str, str])
         return
     rest = [a for a in facts if a is not atom]
     for fact in state.by_predicate.get(atom.predicate, ()):
-        extended = _match(atom, fact, env)
+        extended = match_atom(atom, fact, env)
         if extended is not None:
             yield from _join(free, rest, state, extended)
 
 
-def _match(atom: Atom, fact: Fact, env: dict[str, str]) -> dict[str, str] | None:
+def match_atom(atom: Atom, fact: Fact, env: Env) -> dict[str, str] | None:
+    """`env` extended so that `atom` grounds to `fact`, or None if it cannot."""
     if len(fact) != len(atom.args) + 1:
         return None
     extended = dict(env)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 
 from cook2ltl.errors import UserError
@@ -25,6 +25,13 @@ class Domain:
     path: Path
     predicates: dict[str, int]  # name → arity
     schemas: dict[str, Schema]
+
+    @cached_property
+    def never_added(self) -> frozenset[str]:
+        """The predicates no action makes true (what kind of thing each object is, or has stopped being): one
+        that does not hold now never will."""
+        added = {e.fact.predicate for schema in self.schemas.values() for e in schema.effects if e.value}
+        return frozenset(self.predicates) - added
 
 
 def load_domain(path: Path) -> Domain:

@@ -13,7 +13,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from cook2ltl.reduce.model import TIMER, Call
-from cook2ltl.world.logic import Fact, State, applicable, bindings, effects_of, holds, successor
+from cook2ltl.world.logic import Fact, State, applicable, bindings, effects_of, ground, holds, match_atom
+from cook2ltl.world.logic import positive_facts, successor
 from cook2ltl.world.pddl import Domain
 
 WAIT = "wait"
@@ -83,6 +84,23 @@ class World:
         if goal is not None and goal not in after.facts:
             return Step(state, f"{call.args[0]} never becomes {call.args[1]} here: nothing makes it {goal[0]}")
         return Step(after)
+
+    def possible(self, state: State, fact: Fact) -> bool:
+        """Whether an action or process of the domain could ever make `fact` true, as far as the kinds of
+        things in `state` tell (the facts no action makes true): `in(mix, ribs)` cannot when ribs holds
+        nothing. Only a fact that surely cannot is refused."""
+        if fact in state.facts:
+            return True
+        kinds = self.domain.never_added
+        for schema in self.domain.schemas.values():
+            for effect in schema.effects:
+                env = match_atom(effect.fact, fact, {}) if effect.value and effect.fact.predicate == fact[0] else None
+                needs = () if env is None else (*positive_facts(schema.precondition), *positive_facts(effect.condition))
+                if env is not None and all(ground(a, env) in state.facts for a in needs
+                                           if a.predicate in kinds and all(not t.startswith("?") or t in env
+                                                                           for t in a.args)):
+                    return True
+        return False
 
     def refusal(self, name: str, call: Call, state: State) -> str:
         from cook2ltl.world.explain import why_not
