@@ -1,3 +1,7 @@
+import json
+import os
+from pathlib import Path
+
 import pytest
 
 from tests.models_required import require_models
@@ -14,6 +18,9 @@ def real_parsers():
 
 
 def pytest_terminal_summary(terminalreporter):
+    counts_file = os.environ.get("COOK2LTL_FUZZ_COUNTS")  # `cook2ltl bench fuzz` reads the counts from here
+    if counts_file:
+        Path(counts_file).write_text(json.dumps(dict(TRIED)), encoding="utf-8")
     if TRIED:
         counts = ", ".join(f"{name} {count}" for name, count in sorted(TRIED.items()))
         terminalreporter.write_line(f"reliability: inputs tried: {sum(TRIED.values())} ({counts})")

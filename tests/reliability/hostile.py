@@ -2,16 +2,24 @@
 
 from __future__ import annotations
 
+import os
 import re
 from collections import Counter
+from datetime import timedelta
 from typing import Sequence
 
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, settings, strategies as st
 
 from cook2ltl.domain import Label, Span
 
 # How many inputs each property test tried; printed at the end of the run for the report (see conftest).
 TRIED: Counter[str] = Counter()
+
+# A fuzzing target's budget: brief in `make test`, as long as asked in `cook2ltl bench fuzz`
+# ($COOK2LTL_FUZZ_EXAMPLES). An example that runs past the deadline is a hang, and fails.
+FUZZ = settings(max_examples=int(os.environ.get("COOK2LTL_FUZZ_EXAMPLES", "60")), deadline=timedelta(seconds=20),
+                suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.data_too_large],
+                derandomize=False)
 
 HAND_MADE = (
     "",
