@@ -11,7 +11,7 @@ from pathlib import Path
 
 from tests.models_required import require_models
 
-BENCHMARKS = ("table1", "table2", "ner", "micro")
+BENCHMARKS = ("table1", "table2", "ner", "micro", "fuzz")
 
 
 def test_bench_smoke_writes_every_result(tmp_path):
@@ -51,3 +51,6 @@ def test_bench_smoke_writes_every_result(tmp_path):
     assert 0 < micro["ltl"]["progress_ms_per_step_cold"]["median"] < 50
     assert micro["kitchen"]["actions"] > 0 and micro["kitchen"]["seconds_per_action"] > 0
     assert "first_screen_seconds" in micro["app"] or "error" in micro["app"]
+
+    fuzz = results["fuzz"]  # every boundary's target, 20 examples each: no traceback, hang or loss
+    assert fuzz["failed"] == [] and fuzz["passed"] > 0 and fuzz["inputs"] >= 20 * len(fuzz["tried"]) > 0

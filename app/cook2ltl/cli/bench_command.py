@@ -1,4 +1,5 @@
-"""`cook2ltl bench`: the paper's Tables I and II, the span model against a spaCy baseline, micro timings."""
+"""`cook2ltl bench`: the paper's Tables I and II, the span model against a spaCy baseline, micro timings, and the
+fuzzing targets run long."""
 
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ class Benchmark(StrEnum):
     TABLE2 = "table2"
     NER = "ner"
     MICRO = "micro"
+    FUZZ = "fuzz"
     ALL = "all"
 
 
@@ -39,6 +41,8 @@ def bench_command(
     seed: Optional[int] = typer.Option(None, help="Table I: the first run's seed; later runs take the next ones. "
                                                   "Run 4242 (the default) meets the recipes in the file's order, "
                                                   "others in an order shuffled by their seed."),
+    examples: int = typer.Option(2000, min=1, max=1_000_000, help="Fuzz: examples per fuzzing target "
+                                                                   "(make test runs 60)."),
 ) -> None:
     """Measure and write bench/results/<name>.json and .md (a benchmark, not a test: it takes long)."""
     from cook2ltl.reduce.llm import DEFAULT_MODEL
@@ -65,4 +69,8 @@ def bench_command(
         from cook2ltl.bench.micro import run_micro
 
         run_micro(model, smoke, out, echo)
+    if Benchmark.FUZZ in chosen:
+        from cook2ltl.bench.fuzz import run_fuzz
+
+        run_fuzz(20 if smoke else examples, out, echo)
     echo(f"results in {out}/")
