@@ -35,7 +35,7 @@ from cook2ltl.reduce.body import instantiate, parametrize, placeholders
 from cook2ltl.reduce.intents import Intents
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
-from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand
+from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, offered_verbs
 from cook2ltl.reduce.repair import Checked, reduce_checked
 from cook2ltl.reduce.validation import PlanValidator, RecipeSoFar, Validation
 from cook2ltl.translate.formula import (
@@ -124,6 +124,7 @@ class Translation:
     validating: bool = False  # whether new reductions were checked in the kitchen
     world_start: object | None = None  # the world model's state before the first step (a world.logic.State)
     world_binding: Mapping[str, str] = field(default_factory=dict)  # THOR: the objectId each name stands for
+    skipped_verbs: tuple[str, ...] = ()  # why library verbs were not offered to the model (not identifiers)
 
 
 @dataclass(frozen=True)
@@ -202,7 +203,7 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
                     llm_seconds=state.stats.llm_seconds + sum(usage.seconds for usage in written))
     yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
                                tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None,
-                               state.world_start, state.world_binding))
+                               state.world_start, state.world_binding, state.skipped_verbs))
 
 
 def world_validation(grounded: PlanCheck) -> Validation:
@@ -224,6 +225,7 @@ class _Run:
         if self.uses_library and translator.library is None:
             raise ValueError("the AR+A variant needs a library")
         self.verbs: list[LibraryVerb] = []
+        self.skipped_verbs: tuple[str, ...] = ()
         self.world_state = self.world_start = None  # the world model's state: where the recipe has got to
         self.world_binding: dict[str, str] = {}  # in a THOR kitchen, the objectId each name stands for
         self.scene = ""  # that THOR kitchen's scene
@@ -403,7 +405,7 @@ class _Run:
     def _refresh(self) -> None:
         if self.uses_library:
             entries = self.t.library.live(self.t.primitives.name, self.t.approved_only)
-            self.verbs = [LibraryVerb(e.verb, e.signature, e.body) for e in entries]
+            self.verbs, self.skipped_verbs = offered_verbs(LibraryVerb(e.verb, e.signature, e.body) for e in entries)
 
     def _count(self, **increments) -> None:
         self.stats = replace(self.stats, **{k: getattr(self.stats, k) + v for k, v in increments.items()})

@@ -13,8 +13,10 @@ from typing import Optional
 
 import typer
 from rich.console import Console
-from rich.markup import escape
 from rich.table import Table
+from rich.text import Text
+
+from cook2ltl.text_safety import literal, styled, terminal
 
 library_app = typer.Typer(help="Review the action library: list, show, approve, reject, edit, history, undo, "
                                "export, import.", no_args_is_help=True)
@@ -53,20 +55,19 @@ def list_command(library: Optional[Path] = LibraryOption,
 
     store = _open(library)
     entries = store.search(search) if search else store.entries()
-    table = Table("id", "set", "action", "status", "check", "v", "reviewed", "model", title=str(store.path))
+    table = Table("id", "set", "action", "status", "check", "v", "reviewed", "model", title=literal(store.path))
     for entry in entries:
         if status and entry.status.value != status:
             continue
         reviewed = f"{entry.reviewed_by} {entry.reviewed_at[:10]}" if entry.reviewed_by else ""
         action = entry.action if entry.has_plan else f"{entry.action} {NO_PLAN}"
-        table.add_row(str(entry.id), entry.primitives, escape(action), _status(entry.status.value),
-                      f"[{CHECK_STYLE[entry.validation]}]{entry.validation}[/]", str(entry.version),
-                      escape(reviewed), escape(entry.model))
+        table.add_row(str(entry.id), literal(entry.primitives), literal(action), _status(entry.status.value),
+                      _check(entry.validation), str(entry.version), literal(reviewed), literal(entry.model))
     if table.row_count:
-        Console().print(table)
+        terminal().print(table)
         return
     wanted = (f" matching {search!r}" if search else "") + (f" with status {status}" if status else "")
-    Console(highlight=False).print(escape(f"no entries{wanted} in {store.path}"))
+    terminal(highlight=False).print(f"no entries{wanted} in {store.path}")
 
 
 @library_app.command("show")
@@ -76,21 +77,21 @@ def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None
     from cook2ltl.library.store import shown_body
 
     entry = _open(library).get(entry_id)
-    console = Console(highlight=False)
-    review = (f" by {escape(entry.reviewed_by)} at {entry.reviewed_at}" if entry.reviewed_by
+    console = terminal(highlight=False)
+    review = (f" by {entry.reviewed_by} at {entry.reviewed_at}" if entry.reviewed_by
               else "" if entry.status.value != "pending" else ", not reviewed yet")
-    console.print(f"[bold]{escape(entry.action)}[/bold]  {_status(entry.status.value)}{review}")
-    console.print(f"version {entry.version} · kitchen check [{CHECK_STYLE[entry.validation]}]{entry.validation}[/]")
+    console.print(styled((entry.action, "bold"), "  ", _status(entry.status.value), review))
+    console.print(styled(f"version {entry.version} · kitchen check ", _check(entry.validation)))
     for problem in entry.problems:
-        console.print(f"  [red]✗[/red] {escape(problem)}")
-    console.print(f"effect: {escape(shown_effect(entry.effect))}")
+        console.print(styled("  ", ("✗", "red"), " ", problem))
+    console.print(f"effect: {shown_effect(entry.effect)}")
     console.print()
-    console.print(escape(shown_body(entry.body)))
+    console.print(shown_body(entry.body))
     console.print()
     if entry.example:
-        console.print("[dim]learnt from " + escape(", ".join(f"{k} = {v}" for k, v in entry.example)) + "[/dim]")
-    console.print(f"[dim]set {escape(entry.primitives)} · model {escape(entry.model)} · prompt "
-                  f"{entry.prompt_hash[:12]} · created {entry.created}[/dim]")
+        console.print(literal("learnt from " + ", ".join(f"{k} = {v}" for k, v in entry.example), "dim"))
+    console.print(literal(f"set {entry.primitives} · model {entry.model} · prompt {entry.prompt_hash[:12]} · "
+                          f"created {entry.created}", "dim"))
 
 
 @library_app.command("approve")
@@ -109,8 +110,8 @@ def reject_command(entry_id: int, library: Optional[Path] = LibraryOption, by: O
 
 def _set(entry_id: int, status: str, library: Path | None, by: str | None, force: bool) -> None:
     entry = _open(library).set_status(entry_id, status, by=_by(by), force=force)
-    Console(highlight=False).print(f"entry {entry_id} {escape(entry.action)}: {_status(status)} by "
-                                   f"{escape(entry.reviewed_by)}")
+    terminal(highlight=False).print(styled(f"entry {entry_id} {entry.action}: ", _status(status),
+                                           f" by {entry.reviewed_by}"))
 
 
 @library_app.command("edit")
@@ -141,7 +142,7 @@ def edit_command(entry_id: int,
     entry = store.get(entry_id)
     new_effect = _effect_option(effect, clear_effect, body_file is None)
     body = entry.body if body_file is None else _read_body(body_file)
-    console, errors = Console(highlight=False), Console(stderr=True, highlight=False)
+    console, errors = terminal(highlight=False), terminal(stderr=True, highlight=False)
     if new_effect == entry.effect:
         new_effect = KEEP
     if body == entry.body and new_effect is KEEP:
@@ -155,15 +156,15 @@ def edit_command(entry_id: int,
     problems = body_problems(body, entry.verb, entry.signature, primitive_set, verbs)
     if problems:
         for problem in problems:
-            errors.print(f"[bold red]✗[/bold red] {escape(problem)}")
+            errors.print(styled(("✗", "bold red"), " ", problem))
         errors.print(f"nothing saved: entry {entry_id} keeps version {entry.version}")
         raise typer.Exit(2)
     checked = _kitchen_check(entry, body, primitive_set, verbs) if validate else Recheck("unchecked", ())
     for problem in checked.problems:
-        console.print(f"  [red]✗[/red] {escape(problem)}")
+        console.print(styled("  ", ("✗", "red"), " ", problem))
     if checked.validation == "failed" and not keep_failing:
-        errors.print("[bold red]the body fails the kitchen check[/bold red]; nothing saved "
-                     "(--keep-failing saves it anyway)")
+        errors.print(styled(("the body fails the kitchen check", "bold red"),
+                            "; nothing saved (--keep-failing saves it anyway)"))
         raise typer.Exit(1)
     _save(store, entry, body, by, checked, note, new_effect, console)
 
@@ -172,9 +173,9 @@ def _save(store, entry, body: str, by: str | None, checked, note: str, effect, c
     from cook2ltl.library.effect import shown_effect
 
     edited = store.edit(entry.id, body, _by(by), checked.validation, checked.problems, note, effect)
-    console.print(f"entry {entry.id} {escape(edited.action)}: version {edited.version}, kitchen check "
-                  f"[{CHECK_STYLE[edited.validation]}]{edited.validation}[/], effect "
-                  f"{escape(shown_effect(edited.effect))}, {_status('pending')} review")
+    console.print(styled(f"entry {entry.id} {edited.action}: version {edited.version}, kitchen check ",
+                         _check(edited.validation), f", effect {shown_effect(edited.effect)}, ", _status("pending"),
+                         " review"))
 
 
 def _effect_option(atoms: list[str] | None, clear: bool, no_body: bool):
@@ -222,7 +223,8 @@ def _kitchen_check(entry, body, primitive_set, verbs):
     missing = unsupported(primitive_set)
     if missing:
         return Recheck("unchecked", (f"not checked in the kitchen: it has no action for {', '.join(missing)}",))
-    with Console(stderr=True).status("running the body in the kitchen …"), KitchenValidator(primitive_set) as kitchen:
+    with (terminal(stderr=True).status("running the body in the kitchen …"),
+          KitchenValidator(primitive_set) as kitchen):
         return recheck(entry, body, primitive_set, verbs, kitchen)
 
 
@@ -233,16 +235,16 @@ def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> N
 
     store = _open(library)
     entry = store.get(entry_id)
-    table = Table("v", "at", "by", "check", "note", "body", title=f"entry {entry_id} {escape(entry.action)}",
+    table = Table("v", "at", "by", "check", "note", "body", title=literal(f"entry {entry_id} {entry.action}"),
                   show_lines=True)
     for version in store.history(entry_id):
-        table.add_row(str(version.version), version.at[:16].replace("T", " "), escape(version.author),
-                      f"[{CHECK_STYLE[version.validation]}]{version.validation}[/]", escape(version.note),
-                      escape(shown_body(version.body)))
-    console = Console(highlight=False)
+        table.add_row(str(version.version), literal(version.at[:16].replace("T", " ")), literal(version.author),
+                      _check(version.validation), literal(version.note), literal(shown_body(version.body)))
+    console = terminal(highlight=False)
     console.print(table)
     for review in store.reviews(entry_id):
-        console.print(f"version {review.version} {_status(review.status)} by {escape(review.reviewer)} at {review.at}")
+        console.print(styled(f"version {review.version} ", _status(review.status),
+                             f" by {review.reviewer} at {review.at}"))
 
 
 @library_app.command("undo")
@@ -251,9 +253,9 @@ def undo_command(entry_id: int, library: Optional[Path] = LibraryOption, by: Opt
     store = _open(library)
     entry = store.undo(entry_id, _by(by))
     restored = store.history(entry_id)[-1].restores
-    Console(highlight=False).print(
-        f"entry {entry_id} {escape(entry.action)}: the body of version {restored} is back as version {entry.version}, "
-        f"kitchen check [{CHECK_STYLE[entry.validation]}]{entry.validation}[/], {_status('pending')} review")
+    terminal(highlight=False).print(styled(
+        f"entry {entry_id} {entry.action}: the body of version {restored} is back as version {entry.version}, "
+        "kitchen check ", _check(entry.validation), ", ", _status("pending"), " review"))
 
 
 @library_app.command("export")
@@ -263,7 +265,7 @@ def export_command(file: Path, library: Optional[Path] = LibraryOption) -> None:
 
     store = _open(library)
     count = export_library(store, file)
-    Console(highlight=False).print(f"{count} entr{'y' if count == 1 else 'ies'} from {store.path} written to {file}")
+    terminal(highlight=False).print(f"{count} entr{'y' if count == 1 else 'ies'} from {store.path} written to {file}")
 
 
 @library_app.command("import")
@@ -276,14 +278,18 @@ def import_command(file: Path, library: Optional[Path] = LibraryOption, by: Opti
     from cook2ltl.library.exchange import import_library
 
     report = import_library(_open(library), file, _by(by), replace_pending)
-    console = Console(highlight=False)
+    console = terminal(highlight=False)
     for heading, items, style in (("added", report.added, "green"), ("replaced", report.replaced, "yellow"),
                                   ("conflict", report.conflicts, "bold red")):
         for item in items:
-            console.print(f"[{style}]{heading}[/] {escape(item)}")
+            console.print(styled((heading, style), " ", item))
     console.print(f"{len(report.added)} added, {len(report.unchanged)} unchanged, {len(report.replaced)} replaced, "
                   f"{len(report.conflicts)} conflict(s)")
 
 
-def _status(status: str) -> str:
-    return f"[{STATUS_STYLE[status]}]{status}[/]"
+def _status(status: str) -> Text:
+    return literal(status, STATUS_STYLE.get(status, ""))
+
+
+def _check(validation: str) -> Text:
+    return literal(validation, CHECK_STYLE.get(validation, ""))

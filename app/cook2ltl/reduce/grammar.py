@@ -1,7 +1,9 @@
 """What a plan line may say, as data; rendered as a GBNF grammar for llama.cpp and checked line by line.
 
 The vocabulary is built per action from the primitive set, the library's verbs, the environment's objects
-and states, and the action's own arguments, so a constrained model can only write admissible lines.
+and states, and the action's own arguments, so a constrained model can only write admissible lines. Every
+word goes into the grammar through `gbnf_literal`, so no text (an imported library's verb, say) can be
+read by llama.cpp as grammar syntax; a library verb that is not a name a plan line can call is left out.
 """
 
 from __future__ import annotations
@@ -15,6 +17,10 @@ from cook2ltl.reduce.model import CONDITION, TIMER, Action, Call, PrimitiveSet
 OBJECT, VALUE = "object", "value"  # slot kinds besides CONDITION
 DURATION_UNITS = ("seconds", "minutes", "hours")
 _DURATION = re.compile(r"[1-9][0-9]{0,2}_(seconds|minutes|hours)\Z")
+_NAME = re.compile(r"[a-z][a-z0-9_]*\Z")  # a name a plan line can call (what reduce.body reads back)
+_ARGUMENT = re.compile(r"[a-z0-9][a-z0-9_]*\Z")  # and a word it can pass
+# GBNF string escapes for what may not appear as itself between quotes.
+_GBNF_ESCAPES = {"\\": "\\\\", '"': '\\"', "\n": "\\n", "\r": "\\r", "\t": "\\t"}
 INDENT = "    "
 COMMENT_CHARACTERS = 60
 
@@ -40,17 +46,31 @@ def vocabulary(primitives: PrimitiveSet, library_verbs: Iterable[tuple[str, tupl
     shapes = [Shape(p.name, tuple(CONDITION if k == CONDITION else OBJECT for k in p.params)) for p in primitives.primitives]
     taken = {p.name for p in primitives.primitives} | {action.verb}
     for verb, signature in library_verbs:
-        if verb not in taken:
+        if verb not in taken and unusable_verb(verb, signature) is None:
             shapes.append(Shape(verb, tuple(VALUE if c in ("time", "temperature") else OBJECT for c in signature)))
     # "30 minutes" is a duration a timer waits for; "350 degrees" or "until golden" a state to reach.
-    durations = tuple(dict.fromkeys(p.value for p in action.parameters if p.category == "time" and p.value[:1].isdigit()))
+    durations = _arguments(p.value for p in action.parameters if p.category == "time" and p.value[:1].isdigit())
     names = {shape.name for shape in shapes}  # a state named like an action would read as that action
     return Vocabulary(
         shapes=tuple(dict.fromkeys(shapes)),
-        objects=tuple(dict.fromkeys((*primitives.objects, *action.objects))),
-        states=tuple(dict.fromkeys(v for v in (*primitives.states, *action.values) if v not in durations and v not in names)),
+        objects=_arguments((*primitives.objects, *action.objects)),
+        states=_arguments(v for v in (*primitives.states, *action.values) if v not in durations and v not in names),
         durations=durations,
     )
+
+
+def _arguments(words: Iterable[str]) -> tuple[str, ...]:
+    """The words a plan line can pass (what reduce.body reads back), once each, in order."""
+    return tuple(dict.fromkeys(word for word in words if _ARGUMENT.match(word)))
+
+
+def unusable_verb(verb: str, signature: tuple[str, ...]) -> str | None:
+    """Why a library verb cannot be offered to the model (its name or a parameter is no identifier), or None."""
+    if not _NAME.match(verb):
+        return f"the library verb {verb!r} is not a lower-case identifier; it is not offered to the model"
+    if not all(isinstance(category, str) and _NAME.match(category) for category in signature):
+        return f"the library verb {verb!r} has a parameter that is not an identifier; it is not offered to the model"
+    return None
 
 
 def admits(vocab: Vocabulary, call: Call) -> bool:
@@ -93,7 +113,7 @@ def to_gbnf(vocab: Vocabulary, max_lines: int, comments: bool, avoid: Iterable[s
     first = " | ".join(_shape_rule(shape) for shape in vocab.shapes if shape.name not in set(avoid))
     first = first if first != calls else ""
     conditions = (['object " == " state'] if vocab.states else []) + [f'"{TIMER} == " duration']
-    durations = [*(_literal(d) for d in vocab.durations), '[1-9] [0-9]{0,2} "_" (' + _choice(DURATION_UNITS) + ")"]
+    durations = [*(gbnf_literal(d) for d in vocab.durations), '[1-9] [0-9]{0,2} "_" (' + _choice(DURATION_UNITS) + ")"]
     comment = "comment? " if comments else ""
     rules = [
         f'root ::= first line{{0,{max_lines - 1}}} "\\n"' if first else f'root ::= line{{1,{max_lines}}} "\\n"',
@@ -115,14 +135,25 @@ def to_gbnf(vocab: Vocabulary, max_lines: int, comments: bool, avoid: Iterable[s
 
 def _shape_rule(shape: Shape) -> str:
     if not shape.slots:
-        return _literal(f"{shape.name}()")
+        return gbnf_literal(f"{shape.name}()")
     slots = ' ", " '.join(shape.slots)
-    return f'"{shape.name}(" {slots} ")"'
+    return f"{gbnf_literal(shape.name + '(')} {slots} {gbnf_literal(')')}"
 
 
 def _choice(words: Iterable[str]) -> str:
-    return " | ".join(_literal(word) for word in words)
+    return " | ".join(gbnf_literal(word) for word in words)
 
 
-def _literal(text: str) -> str:
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+def gbnf_literal(text: str) -> str:
+    """`text` as a GBNF string literal that matches exactly it: quotes, backslashes and line breaks escaped,
+    every other control or invisible character as a \\x or \\u escape (llama.cpp reads all of these)."""
+    return '"' + "".join(_gbnf_char(c) for c in text) + '"'
+
+
+def _gbnf_char(char: str) -> str:
+    if char in _GBNF_ESCAPES:
+        return _GBNF_ESCAPES[char]
+    code = ord(char)
+    if char.isprintable():
+        return char
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}"

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Callable, Protocol
 
 from cook2ltl.errors import UserError
+from cook2ltl.reduce.grammar import gbnf_literal
 from cook2ltl.reduce.model import Usage
 from cook2ltl.settings import Limits
 
@@ -62,7 +63,7 @@ class LanguageModel(Protocol):
 
 def line_grammar(options: list[str]) -> str:
     """One line: an indented call among `options`, or a blank line (the body ends)."""
-    calls = " | ".join('"' + option.replace("\\", "\\\\").replace('"', '\\"') + '"' for option in options)
+    calls = " | ".join(gbnf_literal(option) for option in options)
     return f'root ::= "    " call "\\n" | "\\n"\ncall ::= {calls}\n'
 
 

@@ -18,7 +18,7 @@ from typing import Iterable
 
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.body import read_body
-from cook2ltl.reduce.grammar import INDENT
+from cook2ltl.reduce.grammar import INDENT, unusable_verb
 from cook2ltl.reduce.model import CONDITION, Action, Call, PrimitiveSet
 
 
@@ -51,7 +51,8 @@ class Feedback:
 def build_prompt(primitives: PrimitiveSet, library_verbs: Iterable[str], action: Action, comments: bool,
                  feedback: Feedback | None = None) -> Prompt:
     names = {p.name for p in primitives.primitives}
-    imported = [verb for verb in dict.fromkeys(library_verbs) if verb not in names and verb != action.verb]
+    imported = [verb for verb in dict.fromkeys(library_verbs)
+                if verb not in names and verb != action.verb and unusable_verb(verb, ()) is None]
     extra = [name for name in action.objects if name not in primitives.objects]
     lines = []
     if imported:

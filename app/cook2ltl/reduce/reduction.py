@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, Sequence
+from typing import Callable, Iterable, Sequence
 
 from cook2ltl.reduce.body import bind, instantiate, is_empty, loops, read_body, without_loops
-from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
+from cook2ltl.reduce.grammar import admits, to_gbnf, unusable_verb, vocabulary
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.model import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.prompt import Feedback, build_prompt
@@ -29,6 +29,18 @@ class LibraryVerb:
     verb: str
     signature: tuple[str, ...]
     body: str
+
+
+def offered_verbs(library: Iterable[LibraryVerb]) -> tuple[list[LibraryVerb], tuple[str, ...]]:
+    """The library verbs a prompt and a grammar may offer the model, and why the others are not."""
+    offered, reasons = [], {}
+    for verb in library:
+        reason = unusable_verb(verb.verb, verb.signature)
+        if reason is None:
+            offered.append(verb)
+        else:
+            reasons[reason] = None
+    return offered, tuple(reasons)
 
 
 def reduce_action(action: Action, primitives: PrimitiveSet, library: Sequence[LibraryVerb], model: LanguageModel,
