@@ -1,4 +1,5 @@
-"""Where cook2ltl reads and writes: one module, every path overridable by an environment variable."""
+"""Where cook2ltl reads and writes: one module, every path overridable by an environment variable; and the one
+check every path a user gives goes through (an option, an argument, a setting or an environment variable)."""
 
 from __future__ import annotations
 
@@ -7,14 +8,51 @@ from pathlib import Path
 
 from platformdirs import user_cache_dir, user_config_dir, user_data_dir
 
+from cook2ltl.errors import UserError, require_utf8
+
 APP = "cook2ltl"
 # The package lives in app/cook2ltl/, so the project root is two levels up.
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
+MAX_PATH_BYTES = 4096  # Linux's PATH_MAX: longer fails in every call with ENAMETOOLONG
+MAX_NAME_BYTES = 255  # NAME_MAX: the longest one folder or file name may be
+SHOWN_CHARACTERS = 160  # a path longer than this is shown with its middle left out
+
+
+def user_path(value: str | os.PathLike, what: str) -> Path:
+    """`value` as a path, `~` expanded, or a UserError that names `what` (e.g. "--library"): no NUL byte,
+    UTF-8, not empty, and short enough for the system to open."""
+    text = os.fspath(value)
+    hint = "give the path of a file or folder, e.g. ~/robot/primitives.toml."
+    if isinstance(text, bytes) or "\x00" in text:
+        raise UserError(f"{what} {shown(text)} is not a path (it holds a NUL byte or raw bytes).", hint)
+    require_utf8(text, what, hint)
+    if not text.strip():
+        raise UserError(f"{what} is empty.", hint)
+    try:
+        path = Path(text).expanduser()
+    except RuntimeError:  # ~name of no such user, or no home folder to expand ~ to
+        raise UserError(f"{what} {shown(text)}: cannot tell which home folder ~ means.",
+                        "write the path out in full.") from None
+    encoded = os.fsencode(path)
+    if len(encoded) >= MAX_PATH_BYTES or any(len(name) > MAX_NAME_BYTES for name in encoded.split(b"/")):
+        raise UserError(f"{what} {shown(text)} is too long for a path ({MAX_PATH_BYTES - 1:,} bytes at most, "
+                        f"{MAX_NAME_BYTES} for each name in it).", hint)
+    return path
+
+
+def shown(path: str | bytes | os.PathLike) -> str:
+    """A path as a message shows it: on one line (escapes for control characters), its middle left out when long."""
+    text = os.fsdecode(path)
+    text = text if text.isprintable() else repr(text)[1:-1]
+    if len(text) <= SHOWN_CHARACTERS:
+        return text
+    half = SHOWN_CHARACTERS // 2
+    return f"{text[:half]}…{text[-half:]}"
 
 
 def _env_path(var: str, default: Path) -> Path:
     value = os.environ.get(var)
-    return Path(value).expanduser() if value else default
+    return user_path(value, f"${var}") if value else default
 
 
 def models_dir() -> Path:
@@ -47,3 +85,15 @@ def shared_data_dir() -> Path:
 def library_file() -> Path:
     """The action library 𝔸 (SQLite), shared by every run of every recipe."""
     return _env_path("COOK2LTL_LIBRARY", data_dir() / "library.sqlite")
+
+
+def output_folder(value: str | os.PathLike, what: str) -> Path:
+    """The folder a command will write into, made now, so a path that cannot be one is refused before a long
+    run rather than after it."""
+    path = user_path(value, what)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as error:  # a file there, a file on the way, no permission, a read-only disk
+        raise UserError(f"{what} {shown(path)} cannot be a folder to write into: {error.strerror or error}.",
+                        "give a folder you may write to, or one that does not exist yet.") from None
+    return path

@@ -17,17 +17,20 @@
     [keymap]                                   # the app's keys: binding id = keys (a wrong id is named)
     "translate.run" = "ctrl+enter"
     "library.approve" = "y,a"
+
+The file's schema and bounds are in settings_file.py; any other key is refused, as is a value of the wrong
+type (0.5 steps, true repairs) or out of bounds.
 """
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from cook2ltl import paths
+from cook2ltl import files, paths
 from cook2ltl.domain import Label
-from cook2ltl.errors import UserError
+
+SETTINGS_BYTES = 1_000_000  # a settings file is a few lines
 
 
 @dataclass(frozen=True)
@@ -63,69 +66,13 @@ class Settings:
 
 
 def load_settings(path: Path | None = None) -> Settings:
-    path = path or paths.config_file()
-    if not path.exists():
+    """The settings file's (an absent one: the defaults); anything else in it than what the README describes,
+    or a value out of its bounds, is a UserError naming the key."""
+    path = paths.config_file() if path is None else paths.user_path(path, "The settings file")
+    try:
+        raw = files.read_toml(path, SETTINGS_BYTES, "settings file", "give COOK2LTL_CONFIG a TOML file of settings.")
+    except files.MissingFile:
         return Settings()
-    try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
-        raise UserError(f"Settings file {path} is not valid TOML: {error}", "fix it or set COOK2LTL_CONFIG.") from error
-    except OSError as error:  # a folder, a file we may not read
-        raise UserError(f"Cannot read the settings file {path}: {error.strerror or error}.",
-                        "give COOK2LTL_CONFIG a readable TOML file.") from error
-    ner = raw.get("ner", {})
-    try:
-        labels = {Label(key.upper()): str(value) for key, value in ner.get("labels", {}).items()}
-        checkpoint = Path(ner["checkpoint"]).expanduser() if ner.get("checkpoint") else None
-        threshold = float(ner.get("threshold", NerSettings.threshold))
-    except (ValueError, TypeError) as error:
-        raise UserError(f"{path}: bad [ner] setting: {error}",
-                        f"labels are keyed by {', '.join(Label)}; threshold is a number.") from error
-    return Settings(ner=NerSettings(checkpoint, labels, threshold), limits=_limits(raw.get("limits", {}), path),
-                    translate=_translate(raw.get("translate", {}), path), keymap=_keymap(raw.get("keymap", {}), path),
-                    source=path)
+    from cook2ltl.settings_file import settings_from
 
-
-def _translate(raw: dict, path: Path) -> TranslateSettings:
-    unknown = set(raw) - set(TranslateSettings.__dataclass_fields__)
-    if unknown:
-        raise UserError(f"{path}: unknown [translate] setting {', '.join(sorted(unknown))}.",
-                        "the settings are primitives (a list of TOML files) and repairs (0 to 10).")
-    primitives = raw.get("primitives", [])
-    if not isinstance(primitives, list) or not all(isinstance(item, str) and item.strip() for item in primitives):
-        raise UserError(f"{path}: [translate] primitives = {primitives!r} is not a list of files.",
-                        'write e.g. primitives = ["~/robot/primitives.toml"].')
-    repairs = raw.get("repairs", TranslateSettings.repairs)
-    if isinstance(repairs, bool) or not isinstance(repairs, int) or not 0 <= repairs <= 10:
-        raise UserError(f"{path}: [translate] repairs = {repairs!r} is not a whole number from 0 to 10.",
-                        f"the default is {TranslateSettings.repairs}.")
-    ground = raw.get("ground", TranslateSettings.ground)
-    if not isinstance(ground, bool):
-        raise UserError(f"{path}: [translate] ground = {ground!r} is not true or false.",
-                        "true checks and completes every plan in the world model (the default).")
-    return TranslateSettings(tuple(Path(item).expanduser() for item in primitives), repairs, ground)
-
-
-def _keymap(raw: dict, path: Path) -> dict[str, str]:
-    if not isinstance(raw, dict):
-        raise UserError(f"{path}: keymap is not a table.", 'write [keymap] then lines like "translate.run" = "f5".')
-    for binding, keys in raw.items():
-        if not isinstance(keys, str) or not keys.strip():
-            raise UserError(f"{path}: [keymap] {binding} = {keys!r} is not a key.",
-                            'give keys as a string, e.g. "ctrl+r" or "f5,ctrl+r".')
-    return dict(raw)
-
-
-def _limits(raw: dict, path: Path) -> Limits:
-    unknown = set(raw) - set(Limits.__dataclass_fields__)
-    if unknown:
-        raise UserError(f"{path}: unknown [limits] setting {', '.join(sorted(unknown))}.",
-                        f"the limits are {', '.join(Limits.__dataclass_fields__)}.")
-    values = {}
-    for name, default in vars(Limits()).items():
-        value = raw.get(name, default)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
-            raise UserError(f"{path}: [limits] {name} = {value!r} is not a positive number.",
-                            f"the default is {default}.")
-        values[name] = type(default)(value)
-    return Limits(**values)
+    return settings_from(raw, path)

@@ -42,12 +42,12 @@ def test_a_lab_adds_its_own_set_without_code(tmp_path):
 
 
 @pytest.mark.parametrize("content, problem", [
-    ("name = 'x'\nexamples = 'e.txt'\nobjects = ['pot']\n", "no [primitives] table"),
-    ("examples = 'e.txt'\nobjects = ['pot']\n[primitives]\n'pick up' = ['what']\n", "not a lower-case identifier"),
+    ("name = 'x'\nexamples = 'e.txt'\nobjects = ['pot']\n", "primitives is missing"),
+    ("examples = 'e.txt'\nobjects = ['pot']\n[primitives]\n'pick up' = ['what']\n", "has the key 'pick up', which must be a lower-case identifier"),
     ("examples = 'e.txt'\n[primitives]\nput = ['what']\n", "`objects` is empty"),
     ("examples = 'e.txt'\nobjects = ['pot']\nstates = ['open']\n[primitives]\nopen = ['what']\n", "both a primitive and a state"),
-    ("objects = ['pot']\n[primitives]\nput = ['what']\n", "no `examples` file"),
-    ("examples = 'missing.txt'\nobjects = ['pot']\n[primitives]\nput = ['what']\n", "cannot read the examples"),
+    ("objects = ['pot']\n[primitives]\nput = ['what']\n", "examples is missing: it must be the file of the prompt's example"),
+    ("examples = 'missing.txt'\nobjects = ['pot']\n[primitives]\nput = ['what']\n", "No examples file at"),
     ("this is = = not toml", "not valid TOML"),
 ])
 def test_a_broken_set_is_a_user_error_with_a_hint(tmp_path, content, problem):

@@ -74,7 +74,9 @@ def test_recipe_files_that_are_not_text(tmp_path):
         with pytest.raises(UserError, match=message):
             read_recipe(str(tmp_path / name), 200_000)
     with pytest.raises(UserError, match="No recipe file"):
-        read_recipe(str(tmp_path))  # a folder
+        read_recipe(str(tmp_path / "absent.txt"))
+    with pytest.raises(UserError, match="Cannot read the recipe file .*: it is a folder"):
+        read_recipe(str(tmp_path))
     (tmp_path / "bom.txt").write_bytes("\ufeffBoil the eggs.".encode("utf-8"))
     assert read_recipe(str(tmp_path / "bom.txt"), 100) == "Boil the eggs."
 

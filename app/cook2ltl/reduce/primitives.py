@@ -8,106 +8,118 @@
     pick_up = ["what"]                     # parameters in call order; `condition` is `subject == state`
     put = ["what", "where"]
     wait = ["condition"]
+
+Names of primitives, parameters, objects and states are lower-case identifiers: they become words of the
+decoding grammar. The file, its examples, its domain and its kitchen are read with bounds (files.py).
 """
 
 from __future__ import annotations
 
-import re
-import tomllib
 from pathlib import Path
+from typing import Annotated
 
-from cook2ltl import paths
+from pydantic import Field, StringConstraints, field_validator
+
+from cook2ltl import files, paths
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.model import CONDITION, Primitive, PrimitiveSet, WorldSpec
+from cook2ltl.toml_models import FileName, Identifier, PddlName, Table, flag, validated
 
 BUILT_IN = ("recipe", "ai2thor")
-IDENTIFIER = re.compile(r"[a-z][a-z0-9_]*\Z")
-PDDL_NAME = re.compile(r"[a-z][a-z0-9_-]*\Z")
-VALUE = re.compile(r"[a-z0-9][a-z0-9_]*\Z")
 THOR_KITCHENS = "thor"  # a [world] kitchen: the 30 AI2-THOR kitchens
+HINT = "see assets/primitives/recipe.toml for the format."
+SET_BYTES = 1_000_000  # the paper's sets are under 3 kB
+EXAMPLES_BYTES = 200_000  # the examples go into every prompt: the paper's are 1 kB
+MAX_PRIMITIVES, MAX_PARAMETERS, MAX_OBJECTS, MAX_STATES = 200, 8, 2000, 500
+
+SetName = Annotated[str, StringConstraints(pattern=r"^[A-Za-z0-9][A-Za-z0-9_.-]*$", max_length=64),
+                    Field(description="a name such as my-robot (letters, digits, _, . and -)")]
+KitKey = Annotated[str, StringConstraints(pattern=r"^(\*|[a-z][a-z0-9_-]*)$", max_length=64),
+                   Field(description='a goal predicate, or "*" for every goal')]
+
+Parameters = Annotated[list[Identifier], Field(max_length=MAX_PARAMETERS, description=(
+    f'a list of at most {MAX_PARAMETERS} parameter names in call order, e.g. ["what", "where"]'))]
+
+
+class WorldTable(Table):
+    """[world]: domain = "x.pddl", kitchen = "k.toml" or "thor", kit = [objects the planner may use],
+    planner = true (false: plans are checked, never completed), liquids = "filled-with" (the predicate
+    telling which container a liquid fills, when liquids are not `in` things), [world.states] word = "predicate"."""
+
+    domain: FileName = Field(description='the PDDL domain file, e.g. "domain.pddl"')
+    kitchen: FileName = Field(THOR_KITCHENS, description='a kitchen file, or "thor" for the AI2-THOR kitchens')
+    states: dict[Identifier, PddlName] = Field({}, max_length=MAX_STATES,
+                                               description='a table of state words and their predicates')
+    kit: dict[KitKey, list[PddlName]] | None = Field(
+        None, max_length=MAX_STATES, description="a list of object names, or a table of them by goal predicate")
+    planner: bool = flag(True)
+    liquids: PddlName | None = Field(None, description='the predicate a liquid fills its container by, such as '
+                                                       '"filled-with"')
+
+    @field_validator("kit", mode="before")
+    @classmethod
+    def _for_every_goal(cls, kit: object) -> object:
+        return {"*": kit} if isinstance(kit, list) else kit
+
+
+class PrimitiveSetFile(Table):
+    name: SetName | None = None
+    examples: FileName = Field(description="the file of the prompt's example functions, beside this one")
+    objects: list[Identifier] = Field([], max_length=MAX_OBJECTS,
+                                      description=f"a list of at most {MAX_OBJECTS} lower-case identifiers")
+    states: list[Identifier] = Field([], max_length=MAX_STATES,
+                                     description=f"a list of at most {MAX_STATES} lower-case identifiers")
+    primitives: dict[Identifier, Parameters] = Field(
+        min_length=1, max_length=MAX_PRIMITIVES,
+        description=f'a table of 1 to {MAX_PRIMITIVES} primitives, each with at most {MAX_PARAMETERS} parameters, '
+                    'e.g. put = ["what", "where"]')
+    world: WorldTable | None = Field(None, description="a table")
 
 
 def load_primitives(choice: str) -> PrimitiveSet:
     """A built-in set by name (recipe, ai2thor) or a TOML file by path."""
-    path = paths.assets_dir() / "primitives" / f"{choice}.toml" if choice in BUILT_IN else Path(choice).expanduser()
-    if not path.is_file():
-        raise UserError(f"No primitive set {choice!r}.", f"use {' or '.join(BUILT_IN)}, or the path of a TOML file.")
+    if choice in BUILT_IN:
+        path = paths.assets_dir() / "primitives" / f"{choice}.toml"
+    else:
+        path = paths.user_path(choice, "The primitive set")
     try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
-        raise UserError(f"{path} is not valid TOML: {error}", "see assets/primitives/recipe.toml for the format.") from error
-    return _primitive_set(raw, path)
+        raw = files.read_toml(path, SET_BYTES, "primitive set", HINT)
+    except files.MissingFile:
+        raise UserError(f"No primitive set {paths.shown(choice)}.",
+                        f"use {' or '.join(BUILT_IN)}, or the path of a TOML file.") from None
+    return _primitive_set(validated(PrimitiveSetFile, raw, path, HINT), path)
 
 
-def _primitive_set(raw: dict, path: Path) -> PrimitiveSet:
+def _primitive_set(file: PrimitiveSetFile, path: Path) -> PrimitiveSet:
     def bad(message: str) -> UserError:
-        return UserError(f"{path}: {message}", "see assets/primitives/recipe.toml for the format.")
+        return UserError(f"{paths.shown(path)}: {message}", HINT)
 
-    table = raw.get("primitives")
-    if not isinstance(table, dict) or not table:
-        raise bad("no [primitives] table.")
     primitives = []
-    for name, params in table.items():
-        if not IDENTIFIER.match(name):
-            raise bad(f"primitive {name!r} is not a lower-case identifier (use pick_up, not 'pick up').")
-        if not isinstance(params, list) or not all(isinstance(p, str) and IDENTIFIER.match(p) for p in params):
-            raise bad(f"primitive {name!r}: parameters must be a list of names, e.g. [\"what\", \"where\"].")
+    for name, params in file.primitives.items():
         if CONDITION in params and params != [CONDITION]:
             raise bad(f"primitive {name!r}: a `condition` parameter must be its only one.")
         primitives.append(Primitive(name, tuple(params)))
-    objects, states = _words(raw, "objects", bad), _words(raw, "states", bad)
-    clash = set(states) & {p.name for p in primitives}
+    objects, states = tuple(dict.fromkeys(file.objects)), tuple(dict.fromkeys(file.states))
+    clash = set(states) & set(file.primitives)
     if clash:
         raise bad(f"{', '.join(sorted(clash))} is both a primitive and a state; a state atom would read as the action.")
     if not objects:
         raise bad("`objects` is empty: list what the robot may handle besides a recipe's own objects.")
-    examples_name = raw.get("examples")
-    if not isinstance(examples_name, str):
-        raise bad("no `examples` file named (the prompt's example functions).")
-    examples_path = path.parent / examples_name
-    try:
-        examples = examples_path.read_text(encoding="utf-8").expandtabs(4)
-    except OSError as error:
-        raise bad(f"cannot read the examples file {examples_path}: {error.strerror}.") from error
-    name = raw.get("name", path.stem)
-    return PrimitiveSet(str(name), tuple(primitives), objects, states, examples, path, _world(raw, path, bad))
+    examples = files.read_text(_beside(path, file.examples, "examples"), EXAMPLES_BYTES, "examples file", HINT)
+    world = None if file.world is None else _world(file.world, path)
+    return PrimitiveSet(file.name or path.stem, tuple(primitives), objects, states, examples.expandtabs(4), path,
+                        world)
 
 
-def _world(raw: dict, path: Path, bad) -> WorldSpec | None:
-    """[world]: domain = "x.pddl", kitchen = "k.toml" or "thor", kit = [objects the planner may use],
-    planner = true (false: plans are checked, never completed), liquids = "filled-with" (the predicate
-    telling which container a liquid fills, when liquids are not `in` things), [world.states] word = "predicate"."""
-    table = raw.get("world")
-    if table is None:
-        return None
-    if not isinstance(table, dict) or not isinstance(table.get("domain"), str):
-        raise bad("[world] needs `domain = \"file.pddl\"`, the set's PDDL domain.")
-    kitchen = table.get("kitchen", THOR_KITCHENS)
-    states = table.get("states", {})
-    if not isinstance(kitchen, str) or not isinstance(states, dict) or not all(
-            isinstance(v, str) and IDENTIFIER.match(k) for k, v in states.items()):
-        raise bad("[world] kitchen must be a file name or \"thor\", and [world.states] map words to predicates.")
-    domain = path.parent / table["domain"]
-    if not domain.is_file():
-        raise bad(f"the domain file {domain} does not exist.")
-    where = None if kitchen == THOR_KITCHENS else path.parent / kitchen
-    kit = table.get("kit")
-    kit = {"*": kit} if isinstance(kit, list) else kit
-    if kit is not None and not (isinstance(kit, dict) and all(
-            isinstance(v, list) and all(isinstance(k, str) for k in v) for v in kit.values())):
-        raise bad("[world] kit must be a list of object names, or a table of them by goal predicate.")
-    planner = table.get("planner", True)
-    if not isinstance(planner, bool):
-        raise bad("[world] planner must be true or false.")
-    liquid_fill = table.get("liquids")
-    if liquid_fill is not None and not (isinstance(liquid_fill, str) and PDDL_NAME.match(liquid_fill)):
-        raise bad("[world] liquids must name a predicate, such as \"filled-with\".")
-    kit = tuple((p, tuple(v)) for p, v in kit.items()) if kit is not None else None
-    return WorldSpec(domain, where, tuple(sorted(states.items())), kit, planner, liquid_fill)
+def _world(table: WorldTable, path: Path) -> WorldSpec:
+    domain = _beside(path, table.domain, "[world] domain")
+    if not files.is_regular_file(domain):
+        raise UserError(f"{paths.shown(path)}: the domain file {paths.shown(domain)} does not exist.", HINT)
+    kitchen = None if table.kitchen == THOR_KITCHENS else _beside(path, table.kitchen, "[world] kitchen")
+    kit = None if table.kit is None else tuple((goal, tuple(names)) for goal, names in table.kit.items())
+    return WorldSpec(domain, kitchen, tuple(sorted(table.states.items())), kit, table.planner, table.liquids)
 
 
-def _words(raw: dict, key: str, bad) -> tuple[str, ...]:
-    words = raw.get(key, [])
-    if not isinstance(words, list) or not all(isinstance(w, str) and VALUE.match(w) for w in words):
-        raise bad(f"`{key}` must be a list of lower-case identifiers such as baking_pan.")
-    return tuple(dict.fromkeys(words))
+def _beside(path: Path, name: str, key: str) -> Path:
+    """A file the set names, relative to the set's own file (or from ~, or absolute)."""
+    return path.parent / paths.user_path(name, f"{paths.shown(path)}: {key}")

@@ -12,14 +12,14 @@ are never effects: the world cannot observe them.
 from __future__ import annotations
 
 import re
-import tomllib
 from functools import cache
 from collections.abc import Sequence
 from itertools import product
 from pathlib import Path
 
-from cook2ltl import paths
+from cook2ltl import files, paths
 from cook2ltl.errors import UserError
+from cook2ltl.paths import shown
 from cook2ltl.reduce.model import Action
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.world import World
@@ -27,6 +27,7 @@ from cook2ltl.world.world import World
 SLOTS = ("what", "where", "how")
 NEVER = frozenset({"done", "ready"})
 SOURCE_WORDS = ("from ", "out of ", "off of ", "off ")
+EFFECTS_BYTES = 1_000_000  # the table is 10 kB
 _ATOM = re.compile(r"\s*([a-z][a-z0-9_-]*)\(([a-z0-9_, ]*)\)\s*\Z")
 
 Template = tuple[str, tuple[str, ...]]  # predicate, arguments (slots or objects)
@@ -39,12 +40,11 @@ def effects_file() -> Path:
 @cache
 def verb_table(path: Path | None = None) -> dict[str, tuple[Template, ...]]:
     path = path or effects_file()
-    try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))["verbs"]
-    except (OSError, tomllib.TOMLDecodeError, KeyError) as error:
-        raise UserError(f"cannot read the verb-effect table {path}: {error}",
-                        "it is a [verbs] table: boil = [\"boiled(what)\"].") from error
-    return {verb: tuple(_template(verb, atom, path) for atom in atoms) for verb, atoms in raw.items()}
+    hint = "it is a [verbs] table: boil = [\"boiled(what)\"]."
+    verbs = files.read_toml(path, EFFECTS_BYTES, "verb-effect table", hint).get("verbs")
+    if not isinstance(verbs, dict) or not all(isinstance(atoms, list) for atoms in verbs.values()):
+        raise UserError(f"{shown(path)} has no [verbs] table of lists of atoms.", hint)
+    return {verb: tuple(_template(verb, atom, path) for atom in atoms) for verb, atoms in verbs.items()}
 
 
 def parse_template(text: str) -> Template:
@@ -61,7 +61,7 @@ def _template(verb: str, text: str, path: Path) -> Template:
     try:
         return parse_template(text)
     except ValueError as error:
-        raise UserError(f"{path}: {verb} = {text!r} is not an effect atom such as boiled(what).",
+        raise UserError(f"{shown(path)}: {verb} = {text!r} is not an effect atom such as boiled(what).",
                         "effects are observable states; done and ready are never effects.") from error
 
 

@@ -13,10 +13,14 @@ from dataclasses import dataclass
 from functools import cache, cached_property
 from pathlib import Path
 
+from cook2ltl import files
 from cook2ltl.errors import UserError
+from cook2ltl.paths import shown
 from cook2ltl.world.logic import And, Atom, Condition, Constant, Effect, Equal, Exists, Forall, Not, Or, Schema
 
 CACHE_VERSION = 1
+DOMAIN_BYTES = 500_000  # the AI2-THOR domain is 21 kB
+CACHE_BYTES = 20_000_000  # its cached records are about 100 kB
 
 
 @dataclass(frozen=True)
@@ -40,43 +44,46 @@ def load_domain(path: Path) -> Domain:
 
 @cache
 def _load(path: Path) -> Domain:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as error:
-        raise UserError(f"cannot read the domain file {path}: {error.strerror}.",
-                        "a primitive set names its PDDL domain with `domain = \"file.pddl\"`.") from error
+    text = _domain_text(path)
     cached = _cache_file(text)
-    if cached is not None and cached.is_file():
-        try:
-            return _from_json(json.loads(cached.read_text(encoding="utf-8")), path)
-        except (ValueError, KeyError, TypeError):
-            pass  # a damaged cache is read again from the PDDL and rewritten
+    try:
+        return _from_json(json.loads(files.read_text(cached, CACHE_BYTES, "domain cache", "")), path)
+    except (UserError, ValueError, KeyError, TypeError):
+        pass  # no cache yet, or a damaged one: read again from the PDDL and rewritten
     domain = _read(path, text)
-    if cached is not None:
+    try:
         cached.parent.mkdir(parents=True, exist_ok=True)
         partial = cached.with_suffix(".partial")
         partial.write_text(json.dumps(_to_json(domain)), encoding="utf-8")
         partial.replace(cached)
+    except OSError:
+        pass  # a cache that cannot be written (a read-only disk) only costs the next run a second reading
     return domain
 
 
-def read_with_unified_planning(path: Path, problem: Path | None = None):
-    """unified-planning's own Problem for the domain file (and a problem file, if given)."""
+def _domain_text(path: Path) -> str:
+    return files.read_text(path, DOMAIN_BYTES, "PDDL domain file",
+                           'a primitive set names its PDDL domain with `domain = "file.pddl"`.')
+
+
+def read_with_unified_planning(path: Path, text: str | None = None):
+    """unified-planning's own Problem for the domain file (its text, when already read)."""
     from unified_planning.io import PDDLReader
     from unified_planning.shortcuts import get_environment
 
+    text = _domain_text(path) if text is None else text
     environment = get_environment()
     environment.error_used_name = False  # an object may share a predicate's name (knife, freezer)
     environment.credits_stream = None
     try:
-        return PDDLReader(environment).parse_problem(str(path), str(problem) if problem else None)
+        return PDDLReader(environment).parse_problem_string(text)
     except Exception as error:  # the reader raises many kinds; all mean the file is not a domain we can use
-        raise UserError(f"{path} is not a PDDL domain unified-planning can read: {error}",
+        raise UserError(f"{shown(path)} is not a PDDL domain unified-planning can read: {error}",
                         "see assets/domains/recipe.pddl for the form cook2ltl expects.") from error
 
 
 def _read(path: Path, text: str) -> Domain:
-    problem = read_with_unified_planning(path)
+    problem = read_with_unified_planning(path, text)
     predicates = {fluent.name: fluent.arity for fluent in problem.fluents}
     schemas = {}
     for action in problem.actions:
@@ -129,7 +136,7 @@ def _effect(effect) -> Effect:
     return Effect(fact, effect.value.bool_constant_value(), condition, variables)
 
 
-def _cache_file(text: str) -> Path | None:
+def _cache_file(text: str) -> Path:
     from cook2ltl import paths
 
     digest = hashlib.sha256(f"{CACHE_VERSION}|{text}".encode()).hexdigest()[:16]

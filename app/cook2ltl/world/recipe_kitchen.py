@@ -7,17 +7,24 @@ countertop (a liquid one poured from its carton, never held).
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+from typing import Annotated
 
-from cook2ltl.errors import UserError
+from pydantic import Field, StringConstraints
+
+from cook2ltl import files
+from cook2ltl.toml_models import Identifier, PddlName, Table, validated
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.world import kept_facts
 
 COUNTER = "countertop"
+KITCHEN_BYTES = 1_000_000  # the recipe kitchen is 4 kB
+MAX_NAMES = 5000
+Place = Annotated[str, StringConstraints(pattern=r"^([a-z][a-z0-9_]*)?$", max_length=64),
+                  Field(description='a kitchen object, or "" for nowhere')]
 
 
 @dataclass(frozen=True)
@@ -50,22 +57,32 @@ class KitchenFile:
         return name if name in self.kinds or last not in self.kinds else last
 
 
+class _Ingredients(Table):
+    kinds: list[PddlName] = Field(["food", "portable"], max_length=MAX_NAMES, description="a list of kinds")
+    liquids: list[Identifier] = Field([], max_length=MAX_NAMES, description="a list of head nouns")
+    meltable: list[Identifier] = Field([], max_length=MAX_NAMES, description="a list of head nouns")
+
+
+class _Planning(Table):
+    kit: list[Identifier] = Field([], max_length=MAX_NAMES, description="a list of kitchen objects")
+
+
+class _KitchenFile(Table):
+    kinds: dict[Identifier, Annotated[list[PddlName], Field(max_length=MAX_NAMES)]] = Field(
+        max_length=MAX_NAMES, description='a table of objects and their kinds, e.g. pot = ["portable", "vessel"]')
+    start: dict[Identifier, Place] = Field({}, max_length=MAX_NAMES, description="a table of objects and places")
+    ingredients: _Ingredients = Field(_Ingredients(), description="a table")
+    planning: _Planning = Field(_Planning(), description="a table")
+
+
 @cache
 def read_kitchen(path: Path) -> KitchenFile:
-    try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
-        ingredients = raw.get("ingredients", {})
-        return KitchenFile(
-            {name: tuple(kinds) for name, kinds in raw["kinds"].items()},
-            dict(raw.get("start", {})),
-            tuple(ingredients.get("kinds", ("food", "portable"))),
-            frozenset(ingredients.get("liquids", ())),
-            frozenset(ingredients.get("meltable", ())),
-            tuple(raw.get("planning", {}).get("kit", ())),
-        )
-    except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError, AttributeError) as error:
-        raise UserError(f"{path} is not a kitchen file cook2ltl can read: {error}",
-                        "see assets/kitchens/recipe-kitchen.toml for the format.") from error
+    hint = "see assets/kitchens/recipe-kitchen.toml for the format."
+    file = validated(_KitchenFile, files.read_toml(path, KITCHEN_BYTES, "kitchen file", hint), path, hint)
+    ingredients = file.ingredients
+    return KitchenFile({name: tuple(kinds) for name, kinds in file.kinds.items()}, dict(file.start),
+                       tuple(ingredients.kinds), frozenset(ingredients.liquids), frozenset(ingredients.meltable),
+                       tuple(file.planning.kit))
 
 
 def kitchen_state(path: Path, names: Iterable[str]) -> State:
