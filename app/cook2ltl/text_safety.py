@@ -15,7 +15,7 @@ from collections.abc import Iterable
 
 from rich.console import Console, ConsoleOptions, RenderableType
 from rich.segment import Segment
-from rich.text import Text
+from rich.text import Span, Text
 
 # C0 controls but tab and newline, DEL and the C1 controls, lone surrogates (no terminal encoding has them),
 # and the bidi controls (U+061C, U+200E/F, U+202A–E, U+2066–9) that make a terminal reorder what follows.
@@ -33,8 +33,23 @@ def _escape(match: re.Match) -> str:
 
 
 def literal(text: object, style: str = "") -> Text:
-    """A rich Text showing `text` exactly, controls made visible; markup in it is only characters."""
+    """A rich Text showing `text` exactly, controls made visible; markup in it is only characters. A Text
+    keeps its styles, moved along with the characters they cover."""
+    if isinstance(text, Text):
+        return _visible_text(text, style)
     return Text(visible(str(text)), style=style)
+
+
+def _visible_text(text: Text, style: str) -> Text:
+    if not style and not _HIDDEN.search(text.plain):
+        return text
+    shown = [visible(char) for char in text.plain]
+    offsets = [0]
+    for piece in shown:
+        offsets.append(offsets[-1] + len(piece))
+    spans = [Span(offsets[span.start], offsets[span.end], span.style) for span in text.spans]
+    return Text("".join(shown), style=style or text.style, justify=text.justify, overflow=text.overflow,
+                no_wrap=text.no_wrap, end=text.end, spans=spans)
 
 
 def styled(*parts: str | tuple[str, str] | Text) -> Text:
@@ -47,7 +62,7 @@ def _part(part: str | tuple[str, str] | Text) -> str | tuple[str, str] | Text:
         return visible(part)
     if isinstance(part, tuple):
         return visible(part[0]), part[1]
-    return part
+    return literal(part)
 
 
 def json_text(data: object) -> str:
@@ -70,6 +85,8 @@ class LiteralConsole(Console):
         return super().render_str(visible(text), **options)
 
     def render(self, renderable: RenderableType, options: ConsoleOptions | None = None) -> Iterable[Segment]:
+        if isinstance(renderable, Text):  # laid out as shown
+            renderable = literal(renderable)
         for segment in super().render(renderable, options):
             if segment.control or not _HIDDEN.search(segment.text):
                 yield segment

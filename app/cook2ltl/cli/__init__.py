@@ -10,11 +10,10 @@ from typing import Optional
 
 import click
 import typer
-from rich.console import Console
-from rich.markup import escape
 from typer.core import TyperGroup
 
 from cook2ltl.errors import UserError, require_utf8
+from cook2ltl.text_safety import literal, styled, terminal
 
 # The headless commands, imported only when run or listed: `cook2ltl app` starts without loading them.
 COMMANDS = {
@@ -76,15 +75,15 @@ def doctor_command() -> None:
     """Check the whole stack offline and say what is missing and the command that fixes it."""
     from cook2ltl.doctor import run_checks
 
-    console = Console()
+    console = terminal()
     failures = 0
     for check in run_checks():
-        mark = "[green]✓[/green]" if check.ok else "[bold red]✗[/bold red]"
-        console.print(f"{mark} {check.name:<28} {escape(check.detail)}")
+        mark = ("✓", "green") if check.ok else ("✗", "bold red")
+        console.print(styled(mark, f" {check.name:<28} {check.detail}"))
         if not check.ok:
             failures += 1
-            console.print(f"    fix: [bold]{check.fix}[/bold]")
-    console.print("[green]all good[/green]" if not failures else f"[bold red]{failures} problem(s)[/bold red]")
+            console.print(styled("    fix: ", (check.fix, "bold")))
+    console.print(literal("all good", "green") if not failures else literal(f"{failures} problem(s)", "bold red"))
     raise typer.Exit(1 if failures else 0)
 
 
@@ -97,8 +96,8 @@ def main() -> None:
             require_utf8(argument, "The argument", "retype it in a UTF-8 terminal.")
         app()
     except UserError as error:
-        console = Console(stderr=True)
-        console.print(f"[bold red]error:[/bold red] {escape(error.message)}", highlight=False)
+        console = terminal(stderr=True)
+        console.print(styled(("error:", "bold red"), " ", error.message), highlight=False)
         if error.hint:
-            console.print(f"[dim]hint:[/dim] {escape(error.hint)}", highlight=False)
+            console.print(styled(("hint:", "dim"), " ", error.hint), highlight=False)
         sys.exit(2)

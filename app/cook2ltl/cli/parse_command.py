@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import time
 
 import typer
@@ -11,6 +10,7 @@ from rich.text import Text
 
 from cook2ltl.domain import ARGUMENT_LABELS, Label, ParsedRecipe
 from cook2ltl.cli.inputs import read_recipe
+from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 COLOURS = {
     Label.VERB: "bold red",
@@ -38,38 +38,31 @@ def parse_command(
     parsed = parse_recipe(text, spans, dependencies)
     elapsed = time.perf_counter() - started
     if as_json:
-        typer.echo(json.dumps(recipe_json(parsed), ensure_ascii=False, indent=2))
+        typer.echo(json_text(recipe_json(parsed)))
     else:
-        show(parsed, Console(), elapsed)
+        show(parsed, terminal(), elapsed)
 
 
 def show(parsed: ParsedRecipe, console: Console, elapsed: float) -> None:
-    legend = Text("  ").join(Text(label.value, style=COLOURS[label]) for label in Label)
+    legend = Text("  ").join(literal(label.value, style=COLOURS[label]) for label in Label)
     console.print(legend)
     for step in parsed.steps:
-        line = Text(step.sentence.text)
+        line = Text(step.sentence.text)  # styled by the spans' offsets into the text, then shown literally
         for span in step.spans:
             line.stylize(COLOURS[span.label], span.start - step.sentence.start, span.end - step.sentence.start)
-        console.print(Text(f"{step.index + 1:>3}. ", style="dim") + line)
+        console.print(styled((f"{step.index + 1:>3}. ", "dim"), line))
         for number, frame in enumerate(step.frames):
-            call = Text("      ")
-            if frame.negated:
-                call.append("¬ ", style="bold")
-            call.append(frame.name, style=COLOURS[Label.VERB])
-            call.append("(")
-            call.append_text(Text(", ").join(_arguments(frame)))
-            call.append(")")
-            if number < len(step.links):
-                call.append(f"   {step.links[number].value}", style="dim")
-            console.print(call)
-    console.print(f"[dim]{len(parsed.steps)} steps parsed in {elapsed:.2f} s[/dim]")
+            link = f"   {step.links[number].value}" if number < len(step.links) else ""
+            console.print(styled("      ", ("¬ " if frame.negated else "", "bold"), (frame.name, COLOURS[Label.VERB]),
+                                 "(", Text(", ").join(_arguments(frame)), ")", (link, "dim")))
+    console.print(literal(f"{len(parsed.steps)} steps parsed in {elapsed:.2f} s", "dim"))
 
 
 def _arguments(frame) -> list[Text]:
     pieces = []
     for label in ARGUMENT_LABELS:
         for argument in frame.arguments(label):
-            piece = Text(argument.span.text, style=COLOURS[label])
+            piece = literal(argument.span.text, style=COLOURS[label])
             if argument.inferred:
                 piece.append("*", style="dim")  # resolved by zero anaphora
             pieces.append(piece)

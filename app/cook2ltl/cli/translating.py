@@ -14,6 +14,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from cook2ltl.pipeline import ActionDone, Finished, Started, Translation, Translator, Variant
 from cook2ltl.reduce.model import PrimitiveSet
 from cook2ltl.reduce.reduction import ReductionSettings
+from cook2ltl.text_safety import literal, visible
 
 
 @contextmanager
@@ -48,7 +49,7 @@ def translated(text: str, translator: Translator, errors: Console) -> Translatio
     from cook2ltl.stack import dependency_parser, span_extractor
 
     events = run(text, span_extractor(load_settings()), dependency_parser(), translator)
-    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
+    columns = (TextColumn("{task.description}", markup=False), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
     # Off a terminal the bar draws nothing, not even the blank line a transient bar leaves before an error.
     with Progress(*columns, console=errors, transient=True, disable=not errors.is_terminal) as progress:
         task = progress.add_task("parsing", total=None)
@@ -58,7 +59,7 @@ def translated(text: str, translator: Translator, errors: Console) -> Translatio
             elif isinstance(event, ActionDone):
                 reduction = event.result.reduction
                 progress.update(task, completed=event.done,
-                                description=f"{reduction.action.text()} [dim]({reduction.source.value})[/dim]")
+                                description=visible(f"{reduction.action.text()} ({reduction.source.value})"))
             elif isinstance(event, Finished):
                 return event.translation
     raise typer.Exit(130)  # stopped before the end
@@ -84,6 +85,6 @@ def _validator(primitives: PrimitiveSet, validate: bool | None, variant: Variant
         return None
     missing = unsupported(primitives)
     if missing and validate is None:
-        errors.print(f"[yellow]not validating: the kitchen has no action for {', '.join(missing)}[/yellow]")
+        errors.print(literal(f"not validating: the kitchen has no action for {', '.join(missing)}", "yellow"))
         return None
     return KitchenValidator(primitives)

@@ -8,11 +8,9 @@ A STEP lists the atoms true in it separated by ``;`` (``-`` for none).
 
 from __future__ import annotations
 
-import json
 from typing import Annotated
 
 import typer
-from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
@@ -21,6 +19,7 @@ from cook2ltl.ltl.ast import Atom, Formula
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.ltl.progress import Verdict, monitor, verdict
+from cook2ltl.text_safety import json_text, literal, terminal
 
 ltl_app = typer.Typer(
     help="Parse LTLf formulas and follow them step by step over a trace.",
@@ -76,19 +75,13 @@ def parse_command(
     """Print the formula in both syntaxes, and its atoms."""
     f = _read_formula(formula)
     if as_json:
-        typer.echo(
-            json.dumps(
-                {"unicode": to_unicode(f), "spot": to_spot(f), "atoms": _atom_list(f.atoms)},
-                ensure_ascii=False,
-                indent=2,
-            )
-        )
+        typer.echo(json_text({"unicode": to_unicode(f), "spot": to_spot(f), "atoms": _atom_list(f.atoms)}))
         return
     table = Table(show_header=False, box=None)
-    table.add_row(Text("Unicode", style="bold"), Text(to_unicode(f)))
-    table.add_row(Text("Spot", style="bold"), Text(to_spot(f)))
-    table.add_row(Text("Atoms", style="bold"), Text(", ".join(_atom_list(f.atoms)) or "(none)"))
-    Console().print(table)
+    table.add_row(literal("Unicode", style="bold"), literal(to_unicode(f)))
+    table.add_row(literal("Spot", style="bold"), literal(to_spot(f)))
+    table.add_row(literal("Atoms", style="bold"), literal(", ".join(_atom_list(f.atoms)) or "(none)"))
+    terminal().print(table)
 
 
 @ltl_app.command("progress")
@@ -128,14 +121,14 @@ def progress_command(
             ],
             "verdict": final.value,
         }
-        typer.echo(json.dumps(payload, ensure_ascii=False, indent=2))
+        typer.echo(json_text(payload))
         return
     table = Table("#", "step", "remaining obligation", "verdict")
-    table.add_row("0", Text("(start)", style="dim"), Text(to_unicode(f)), _verdict_text(verdict(f)))
+    table.add_row("0", literal("(start)", style="dim"), literal(to_unicode(f)), _verdict_text(verdict(f)))
     for r in results:
         shown = "; ".join(_atom_list(r.step)) or "-"
-        table.add_row(str(r.index), Text(shown), Text(to_unicode(r.remaining)), _verdict_text(r.verdict))
-    console = Console()
+        table.add_row(str(r.index), literal(shown), literal(to_unicode(r.remaining)), _verdict_text(r.verdict))
+    console = terminal()
     console.print(table)
     console.print(Text.assemble("Trace as a whole: ", _verdict_text(final)))
 

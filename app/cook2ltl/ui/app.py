@@ -19,6 +19,7 @@ from textual.screen import Screen
 
 from cook2ltl.errors import UserError
 from cook2ltl.settings import TranslateSettings, load_settings
+from cook2ltl.text_safety import visible
 from cook2ltl.ui.commands import MainCommands
 from cook2ltl.ui.messages import TranslationDone
 from cook2ltl.ui.screens.base import WorkScreen
@@ -65,6 +66,12 @@ class Cook2LTLApp(App):
 
     def on_mount(self) -> None:
         self.set_keymap(self.keymap)
+
+    def notify(self, message: str, *, title: str = "", **options) -> None:
+        """Every notification, a screen's or a widget's, shows its text literally: a path or a library entry
+        in it may hold markup or control characters."""
+        options["markup"] = False
+        super().notify(visible(message), title=visible(title), **options)
 
     def on_translation_done(self, message: TranslationDone) -> None:
         self.translation, self.translation_primitives = message.translation, message.primitives

@@ -10,6 +10,8 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import ModalScreen
 from textual.widgets import Button, Input, Label, Static
 
+from cook2ltl.ui.literal import shown
+
 
 class ErrorDialog(ModalScreen[None]):
     """What went wrong and what to do about it; never a traceback."""
@@ -22,10 +24,10 @@ class ErrorDialog(ModalScreen[None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="error-dialog", classes="dialog-box"):
-            yield Label(self.title_text, classes="dialog-title")
-            yield Static(self.message, id="error-message", markup=False)
+            yield Label(shown(self.title_text), classes="dialog-title")
+            yield Static(shown(self.message), id="error-message")
             if self.hint:
-                yield Static(self.hint, id="error-hint", markup=False)
+                yield Static(shown(self.hint), id="error-hint")
             with Horizontal(classes="dialog-buttons"):
                 yield Button("OK", variant="primary", id="ok")
 
@@ -44,9 +46,9 @@ class ConfirmDialog(ModalScreen[bool]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="confirm-dialog", classes="dialog-box"):
-            yield Label(self.title_text, classes="dialog-title")
-            yield Static(self.details, id="confirm-details", markup=False)
-            yield Static(self.question, id="confirm-question", markup=False)
+            yield Label(shown(self.title_text), classes="dialog-title")
+            yield Static(shown(self.details), id="confirm-details")
+            yield Static(shown(self.question), id="confirm-question")
             with Horizontal(classes="dialog-buttons"):
                 yield Button(self.action, variant="warning", id="confirm")
                 yield Button("Cancel", variant="primary", id="cancel")
@@ -66,7 +68,7 @@ class PathDialog(ModalScreen[Path | None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(classes="dialog-box"):
-            yield Label(self.title_text, classes="dialog-title")
+            yield Label(shown(self.title_text), classes="dialog-title")
             yield Input(self.value, id="path")
             with Horizontal(classes="dialog-buttons"):
                 yield Button(self.action, variant="primary", id="confirm")

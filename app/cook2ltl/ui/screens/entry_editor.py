@@ -17,6 +17,8 @@ from textual.widgets import Button, Label, Static, TextArea
 from textual.worker import Worker, WorkerState
 
 from cook2ltl.errors import UserError
+from cook2ltl.text_safety import visible
+from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import EditorReady, KitchenChecked
 
 if TYPE_CHECKING:
@@ -55,11 +57,11 @@ class EntryEditor(ModalScreen[Edited | None]):
         parameters = ", ".join(bind(entry.signature, entry.signature)) or "no parameters"
         example = ", ".join(f"{k} = {v}" for k, v in entry.example) or "no example kept"
         with Vertical(id="entry-editor", classes="dialog-box"):
-            yield Label(f"Edit #{entry.id}: {entry.action} in the {entry.primitives} primitives (version "
-                        f"{entry.version})", classes="dialog-title")
-            yield Static(Content(f"one call per line; parameters: {parameters}; checked in the kitchen with "
-                                 f"{example}").stylize("$text-muted"))
-            yield TextArea(entry.body, id="body")
+            yield Label(shown(f"Edit #{entry.id}: {entry.action} in the {entry.primitives} primitives (version "
+                              f"{entry.version})"), classes="dialog-title")
+            yield Static(shown(f"one call per line; parameters: {parameters}; checked in the kitchen with "
+                               f"{example}").stylize("$text-muted"))
+            yield TextArea(visible(entry.body), id="body")  # a control in it is shown, and fails the check
             yield Static("", id="problems")
             with Horizontal(classes="dialog-buttons"):
                 yield Button("Save", variant="primary", id="save", disabled=True)
@@ -97,7 +99,7 @@ class EntryEditor(ModalScreen[Edited | None]):
         self.problems = [problem] if problem else body_problems(body, self.entry.verb, self.entry.signature,
                                                                 self.primitives, self.verbs)
         if self.problems:
-            self._show([Content(f"✗ {p}").stylize("$text-error") for p in self.problems])
+            self._show([shown(f"✗ {p}").stylize("$text-error") for p in self.problems])
         else:
             self._show([Content("✓ the pipeline can use this body; Save runs it in the kitchen").stylize(
                 "$text-success")])
@@ -140,7 +142,7 @@ class EntryEditor(ModalScreen[Edited | None]):
             return
         self.failed = Edited(message.body, check)
         self._show([Content("✗ the kitchen refused it:").stylize("bold $text-error"),
-                    *(Content(f"  {p}").stylize("$text-error") for p in check.problems),
+                    *(shown(f"  {p}").stylize("$text-error") for p in check.problems),
                     Content("Save again keeps it anyway (its check stays failed); or change it.").stylize(
                         "$text-muted")])
         save = self.query_one("#save", Button)

@@ -9,6 +9,8 @@ from textual.content import Content
 from textual.screen import ModalScreen
 from textual.widgets import Static
 
+from cook2ltl.ui.literal import shown
+
 GUIDE = (
     ("cook2ltl", "turns recipes into robot task specifications in LTL, offline: parse → reduce → action library "
                  "→ LTL → kitchen (the paper's Algorithm 1)."),
@@ -44,7 +46,7 @@ class HelpScreen(ModalScreen[None]):
             for binding in bindings:
                 if binding.description:
                     keys = ", ".join(key.strip() for key in binding.key.split(","))
-                    lines.append(Content(f"  {keys:<12}").stylize("bold $text-accent") + Content(binding.description))
+                    lines.append(shown(f"  {keys:<12}").stylize("bold $text-accent") + Content(binding.description))
         return Content("\n").join(lines)
 
 

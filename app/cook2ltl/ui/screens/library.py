@@ -10,15 +10,15 @@ from __future__ import annotations
 import threading
 from typing import TYPE_CHECKING
 
-from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, VerticalScroll
-from textual.content import Content
 from textual.widgets import DataTable, Footer, Header, Input, Label, Select
 
 from cook2ltl.errors import UserError
+from cook2ltl.text_safety import literal
+from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import EntryHistory, LibraryLoaded, WorkProgress
 from cook2ltl.ui.screens.base import WorkScreen
 from cook2ltl.ui.screens.dialogs import ConfirmDialog
@@ -117,7 +117,7 @@ class LibraryScreen(WorkScreen):
     def on_library_loaded(self, message: LibraryLoaded) -> None:
         count = self.query_one("#library-count", Label)
         if message.entries is None:
-            count.update(Content(message.problem).stylize("$text-warning"))
+            count.update(shown(message.problem).stylize("$text-warning"))
             return
         self.entries = message.entries
         self._fill_table(message.select)
@@ -126,21 +126,22 @@ class LibraryScreen(WorkScreen):
         table = self.query_one("#entries", DataTable)
         current = self.selected()
         select = select if select is not None else (current.id if current else None)
-        shown = [entry for entry in self.entries if self._wanted(entry)]
+        listed = [entry for entry in self.entries if self._wanted(entry)]
         table.clear()
-        for entry in shown:
+        for entry in listed:
             table.add_row(str(entry.id), status_content(entry.status.value), check_content(entry.validation),
-                          Text(entry.action), Text(entry.primitives), str(entry.version), Text(entry.model),
-                          Text(entry.reviewed_by or ""), key=str(entry.id))
-        self.query_one("#library-count", Label).update(f"{len(shown)} shown · {self.app.services.library_path.name}")
-        ids = [entry.id for entry in shown]
+                          literal(entry.action), literal(entry.primitives), str(entry.version), literal(entry.model),
+                          literal(entry.reviewed_by or ""), key=str(entry.id))
+        self.query_one("#library-count", Label).update(
+            shown(f"{len(listed)} shown · {self.app.services.library_path.name}"))
+        ids = [entry.id for entry in listed]
         if select in ids:
             table.move_cursor(row=ids.index(select))
         self._show_selected()
 
     def _wanted(self, entry: LibraryEntry) -> bool:
-        shown = self.query_one("#shown", Select).value
-        return not shown or shown in (entry.status.value, entry.validation)
+        wanted = self.query_one("#shown", Select).value
+        return not wanted or wanted in (entry.status.value, entry.validation)
 
     def on_data_table_row_highlighted(self, _: DataTable.RowHighlighted) -> None:
         self._show_selected()

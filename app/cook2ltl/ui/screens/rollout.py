@@ -8,7 +8,6 @@ from __future__ import annotations
 import threading
 from pathlib import Path
 
-from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -17,9 +16,11 @@ from textual.content import Content
 from textual.widgets import Button, Checkbox, DataTable, Footer, Header, Input, Select
 
 from cook2ltl.errors import UserError
+from cook2ltl.text_safety import literal, visible
 from cook2ltl.ui.feeds import (
     RecipeRolloutRequest, RolloutRequest, TranslateRequest, recipe_rollout_feed, rollout_feed,
 )
+from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import (
     RecipeActionRolled, RecipeRolloutBegan, RecipeRolloutDone, RecipeStepRolled, RolloutBegan, RolloutDone,
     RolloutRefused, RolloutStepped,
@@ -88,7 +89,7 @@ class RolloutScreen(WorkScreen):
         target.set_options(targets)
         target.value = choice if any(value == choice for _, value in targets) else targets[0][1]
 
-    def _targets(self) -> list[tuple[str, str]]:
+    def _targets(self) -> list[tuple[Content, str]]:
         from cook2ltl.kitchen.tasks import load_tasks
 
         targets = [(f"task {t.id}: {t.instruction}", f"task:{t.id}") for t in load_tasks()]
@@ -224,20 +225,20 @@ class RolloutScreen(WorkScreen):
         step = message.step
         log = self.query_one("#log", DataTable)
         facts = ", ".join(sorted(atom.text for atom in step.facts))
-        log.add_row(str(step.index), Content("✓").stylize("$text-success"), Text(step.attempt.atom.text),
-                    verdict_content(step.verdict.value), Text(facts))
+        log.add_row(str(step.index), Content("✓").stylize("$text-success"), literal(step.attempt.atom.text),
+                    verdict_content(step.verdict.value), literal(facts))
         log.move_cursor(row=log.row_count - 1)
         objects = self.query_one("#objects", DataTable)
         objects.clear()
         for state in message.objects:
-            objects.add_row(Text(state.name), Text(state.where), Text(state.state))
+            objects.add_row(literal(state.name), literal(state.where), literal(state.state))
         self.query_one(FormulaProgress).step(step)
 
     def on_rollout_refused(self, message: RolloutRefused) -> None:
         log = self.query_one("#log", DataTable)
         attempt = message.attempt
-        log.add_row("", Content("✗").stylize("$text-error"), Text(attempt.atom.text), Content("refused"),
-                    Text(attempt.error))
+        log.add_row("", Content("✗").stylize("$text-error"), literal(attempt.atom.text), Content("refused"),
+                    literal(attempt.error))
         log.move_cursor(row=log.row_count - 1)
 
     def on_rollout_done(self, message: RolloutDone) -> None:
@@ -259,18 +260,18 @@ class RolloutScreen(WorkScreen):
         log = self.query_one("#log", DataTable)
         number = step.step.index + 1
         if run.result is step.actions[0]:
-            log.add_row(str(number), "", Text(step.step.sentence.text, style="bold"), "", "")
+            log.add_row(str(number), "", literal(step.step.sentence.text, style="bold"), "", "")
         check = run.result.check
         effect = ", ".join(fact_text(f) for f in check.effect) if check is not None else ""
         outcome = "avoided: not run" if run.avoided else \
             f"effect {effect or '—'}: {'reached' if run.reached else 'not reached'}"
-        log.add_row("", "", Text(f"→ {run.result.reduction.action.text()}"), "", Text(outcome))
+        log.add_row("", "", literal(f"→ {run.result.reduction.action.text()}"), "", literal(outcome))
         for index, line in enumerate(run.lines, 1):
             mark = Content("✓").stylize("$text-success") if line.applied else Content("✗").stylize("$text-error")
             changes = [f"+{fact_text(f)}" for f in line.added] + [f"−{fact_text(f)}" for f in line.removed]
-            log.add_row(f"{number}.{index}", mark, Text(f"{line.call.text()} · {line.written_by or '?'}"),
+            log.add_row(f"{number}.{index}", mark, literal(f"{line.call.text()} · {line.written_by or '?'}"),
                         verdict_content(line.verdict.value) if line.applied else Content("refused"),
-                        Text(" ".join(changes) if line.applied else line.problem))
+                        literal(" ".join(changes) if line.applied else line.problem))
             if line.applied:
                 self.query_one(FormulaProgress).step(line)
         log.move_cursor(row=log.row_count - 1)
@@ -278,7 +279,7 @@ class RolloutScreen(WorkScreen):
     def on_recipe_step_rolled(self, message: RecipeStepRolled) -> None:
         log = self.query_one("#log", DataTable)
         for problem in message.run.problems:
-            log.add_row("", Content("!").stylize("$text-error"), Text("problem"), "", Text(problem))
+            log.add_row("", Content("!").stylize("$text-error"), literal("problem"), "", literal(problem))
         log.move_cursor(row=log.row_count - 1)
 
     def on_recipe_rollout_done(self, message: RecipeRolloutDone) -> None:
@@ -290,6 +291,7 @@ class RolloutScreen(WorkScreen):
                                         f"{reached} of {len(rollout.steps)} steps reached their effects")
 
 
-def _short(label: str, width: int = 46) -> str:
-    """One line in the target list, however long the recipe step."""
-    return label if len(label) <= width else label[: width - 1] + "…"
+def _short(label: str, width: int = 46) -> Content:
+    """One line in the target list, however long the recipe step, shown literally."""
+    label = visible(label)
+    return shown(label if len(label) <= width else label[: width - 1] + "…")

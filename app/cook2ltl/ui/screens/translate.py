@@ -15,6 +15,7 @@ from textual.widgets import (
 )
 
 from cook2ltl.errors import UserError
+from cook2ltl.preprocess.clean import visible_text
 from cook2ltl.ui.feeds import TranslateRequest, translation_feed
 from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone
 from cook2ltl.ui.screens.base import WorkScreen
@@ -67,7 +68,7 @@ class TranslateScreen(WorkScreen):
             yield Button("Run", variant="primary", id="run")
             yield Button("Open…", id="open")
         with Horizontal(id="translate-body"):
-            editor = TextArea(self.app.recipe_text, id="recipe", soft_wrap=True)
+            editor = TextArea(visible_text(self.app.recipe_text), id="recipe", soft_wrap=True)
             editor.border_title = "Recipe"
             yield editor
             with TabbedContent(id="results", initial="steps"):
@@ -171,7 +172,7 @@ class TranslateScreen(WorkScreen):
             self.app.show_error(error)
             return
         self.app.recipe_path = path
-        self.query_one("#recipe", TextArea).load_text(text)
+        self.query_one("#recipe", TextArea).load_text(visible_text(text))
         self.notify(f"opened {path}")
 
     def action_export(self) -> None:

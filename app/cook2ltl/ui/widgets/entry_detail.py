@@ -8,6 +8,8 @@ from typing import TYPE_CHECKING
 from textual.content import Content
 from textual.widgets import Static
 
+from cook2ltl.ui.literal import shown
+
 if TYPE_CHECKING:
     from cook2ltl.library import LibraryEntry, Version
     from cook2ltl.library.versions import Review
@@ -18,11 +20,11 @@ EMPTY = "No entry: the library grows as translations reduce actions with the mod
 
 
 def status_content(status: str) -> Content:
-    return Content(status).stylize(STATUS_STYLE[status])
+    return shown(status).stylize(STATUS_STYLE.get(status, "$text-muted"))
 
 
 def check_content(validation: str) -> Content:
-    return Content(validation).stylize(CHECK_STYLE.get(validation, "$text-muted"))
+    return shown(validation).stylize(CHECK_STYLE.get(validation, "$text-muted"))
 
 
 class EntryDetail(Static):
@@ -42,9 +44,9 @@ class EntryDetail(Static):
 def _body(entry: LibraryEntry) -> Content:
     from cook2ltl.library.store import shown_body
 
-    title = Content(entry.action).stylize("bold") + Content(f"  #{entry.id} · version {entry.version} · "
-                                                            f"{entry.primitives} primitives").stylize("$text-muted")
-    return title + Content("\n") + Content(shown_body(entry.body)).stylize("$text-accent")
+    title = shown(entry.action).stylize("bold") + shown(f"  #{entry.id} · version {entry.version} · "
+                                                        f"{entry.primitives} primitives").stylize("$text-muted")
+    return title + Content("\n") + shown(shown_body(entry.body)).stylize("$text-accent")
 
 
 def _review(entry: LibraryEntry) -> Content:
@@ -52,15 +54,15 @@ def _review(entry: LibraryEntry) -> Content:
 
     reviewed = f"  by {entry.reviewed_by} at {entry.reviewed_at}" if entry.reviewed_by else ""
     lines = [
-        _label("status") + status_content(entry.status.value) + Content(reviewed).stylize("$text-muted"),
+        _label("status") + status_content(entry.status.value) + shown(reviewed).stylize("$text-muted"),
         _label("kitchen") + check_content(entry.validation),
-        *(Content(f"{'':<11}✗ {problem}").stylize("$text-error") for problem in entry.problems),
-        _label("effect") + Content(shown_effect(entry.effect)),
-        _label("learnt by") + Content(f"{entry.model} · prompt {entry.prompt_hash[:12] or '—'} · {entry.created}"),
+        *(shown(f"{'':<11}✗ {problem}").stylize("$text-error") for problem in entry.problems),
+        _label("effect") + shown(shown_effect(entry.effect)),
+        _label("learnt by") + shown(f"{entry.model} · prompt {entry.prompt_hash[:12] or '—'} · {entry.created}"),
     ]
     if entry.example:
         example = ", ".join(f"{placeholder} = {value}" for placeholder, value in entry.example)
-        lines.append(_label("learnt for") + Content(example))
+        lines.append(_label("learnt for") + shown(example))
     return Content("\n").join(lines)
 
 
@@ -70,12 +72,12 @@ def _history(versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> Cont
     lines = [Content("history").stylize("bold")]
     for version in reversed(versions):  # newest first
         note = f" · {version.note}" if version.note else ""
-        lines += [Content("    ") + status_content(review.status) + Content(f" by {review.reviewer} at {review.at}")
+        lines += [Content("    ") + status_content(review.status) + shown(f" by {review.reviewer} at {review.at}")
                   for review in reversed(reviews) if review.version == version.version]
-        lines.append(Content(f"v{version.version:<3}").stylize("bold") + Content(f"{version.at} {version.author}")
-                     + Content(note).stylize("$text-muted") + Content("  ") + check_content(version.validation))
+        lines.append(Content(f"v{version.version:<3}").stylize("bold") + shown(f"{version.at} {version.author}")
+                     + shown(note).stylize("$text-muted") + Content("  ") + check_content(version.validation))
         if version is not versions[-1]:
-            lines.append(Content("    " + shown_body(version.body).replace("\n", " · ")).stylize("$text-muted"))
+            lines.append(shown("    " + shown_body(version.body).replace("\n", " · ")).stylize("$text-muted"))
     return Content("\n").join(lines)
 
 

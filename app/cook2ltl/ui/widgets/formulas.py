@@ -8,6 +8,8 @@ from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from cook2ltl.ui.literal import shown
+
 if TYPE_CHECKING:
     from cook2ltl.ltl.ast import Formula
     from cook2ltl.pipeline import StepResult
@@ -43,11 +45,11 @@ class FormulaList(Static):
         syntax = Content(f"syntax: {'Spot' if self.spot else 'Unicode'} (ctrl+l switches)").stylize("$text-muted")
         blocks = [syntax]
         for result in self.steps:
-            block = Content(f"{result.step.index + 1:>3}  {result.step.sentence.text}").stylize("bold")
-            block += Content("\n     φ = ") + Content(write(result.formula)).stylize("$text-warning")
+            block = shown(f"{result.step.index + 1:>3}  {result.step.sentence.text}").stylize("bold")
+            block += Content("\n     φ = ") + shown(write(result.formula)).stylize("$text-warning")
             for problem in result.problems:
-                block += Content("\n     ! ").stylize("bold $text-error") + Content(problem)
+                block += Content("\n     ! ").stylize("bold $text-error") + shown(problem)
             blocks.append(block)
         if self.whole is not None:
-            blocks.append(Content("whole recipe\n").stylize("bold") + Content(write(self.whole)).stylize("$text-warning"))
+            blocks.append(Content("whole recipe\n").stylize("bold") + shown(write(self.whole)).stylize("$text-warning"))
         self.update(Content("\n\n").join(blocks))

@@ -10,6 +10,8 @@ from typing import TYPE_CHECKING
 from textual.content import Content
 from textual.widgets import Static
 
+from cook2ltl.ui.literal import shown, shown_styled
+
 if TYPE_CHECKING:
     from cook2ltl.kitchen.rollout import TraceStep
     from cook2ltl.kitchen.trial import Trial
@@ -27,14 +29,13 @@ def marked(formula: Formula, met: frozenset[Atom]) -> Content:
     from cook2ltl.ltl.printer import to_unicode
 
     text = to_unicode(formula)
-    content = Content(text)
+    ranges = []
     for atom in met:
         # Not part of a longer name; an atom without arguments is not an argument of another atom either.
         inside = "" if atom.args else r"(?<!\w\()(?<!, )"
         pattern = rf"(?<!\w){inside}{re.escape(to_unicode(atom))}(?![\w(])"
-        for match in re.finditer(pattern, text):
-            content = content.stylize(MET_STYLE, match.start(), match.end())
-    return content
+        ranges += [(match.start(), match.end(), MET_STYLE) for match in re.finditer(pattern, text)]
+    return shown_styled(text, ranges)
 
 
 def verdict_content(value: str) -> Content:
@@ -49,25 +50,25 @@ class FormulaProgress(Static):
 
     def begin(self, began: RolloutBegan) -> None:
         title = f"task {began.task.id} · “{began.task.instruction}”" if began.task else "formula"
-        self.header = [Content(f"{title} · {began.scene}").stylize("bold")]
+        self.header = [shown(f"{title} · {began.scene}").stylize("bold")]
         if began.plan is not None:
             calls = " · ".join(call.text() for call in began.plan.calls) or "(no admissible plan)"
-            self.header.append(_label("plan") + Content(calls) + Content(
+            self.header.append(_label("plan") + shown(calls) + shown(
                 f"  [{began.plan.model}: {', '.join(began.plan.sources)}; {began.plan.seconds:.1f} s]"
             ).stylize("$text-muted"))
         if began.unobservable:
             never = ", ".join(atom.text for atom in began.unobservable)
-            self.header.append(Content(f"the kitchen cannot report {never}: never true").stylize("$text-warning"))
+            self.header.append(shown(f"the kitchen cannot report {never}: never true").stylize("$text-warning"))
         self.formula = began.formula
         self._draw(frozenset(), began.formula, "presumably_false")
 
     def begin_recipe(self, began: RecipeRolloutBegan) -> None:
         core = began.began
-        self.header = [Content(f"{began.title} · {core.steps} steps, {core.actions} actions · the world model"
+        self.header = [shown(f"{began.title} · {core.steps} steps, {core.actions} actions · the world model"
                                ).stylize("bold")]
         if core.unobservable:
             never = ", ".join(atom.text for atom in core.unobservable)
-            self.header.append(Content(f"the world cannot tell {never}: true only once waited for"
+            self.header.append(shown(f"the world cannot tell {never}: true only once waited for"
                                        ).stylize("$text-warning"))
         self.formula = core.formula
         self._draw(frozenset(), core.formula, "presumably_false")
@@ -81,11 +82,11 @@ class FormulaProgress(Static):
 
         result = trial.rollout
         met = result.steps[-1].met if result.steps else frozenset()
-        lines = [_label("verdict") + verdict_content(result.verdict.value) + Content(f" — {explain(result)}")]
+        lines = [_label("verdict") + verdict_content(result.verdict.value) + shown(f" — {explain(result)}")]
         if trial.goal is not None:
             for condition, ok in trial.goal.conditions:
                 mark = Content("✓ ").stylize("$text-success") if ok else Content("✗ ").stylize("$text-error")
-                lines.append(_label("goal") + mark + Content(condition.text()))
+                lines.append(_label("goal") + mark + shown(condition.text()))
         outcome = Content("success").stylize("bold $text-success") if trial.success else \
             Content("failure").stylize("bold $text-error")
         planning = f" · {trial.plan.seconds:.1f} s planning" if trial.plan else ""
@@ -99,7 +100,7 @@ class FormulaProgress(Static):
         for step in rollout.steps:
             for problem in step.problems:
                 lines.append(_label(f"step {step.result.step.index + 1}") + Content("! ").stylize("$text-error")
-                             + Content(problem))
+                             + shown(problem))
         reached = sum(1 for step in rollout.steps if step.reached)
         outcome = Content("success").stylize("bold $text-success") if rollout.success else \
             Content("failure").stylize("bold $text-error")
@@ -111,7 +112,7 @@ class FormulaProgress(Static):
         from cook2ltl.ltl.printer import to_unicode
 
         lines = [*self.header, _label("φ") + marked(self.formula, met),
-                 _label("remaining") + Content(to_unicode(remaining)),
+                 _label("remaining") + shown(to_unicode(remaining)),
                  _label("now") + verdict_content(verdict), *tail]
         self.update(Content("\n").join(lines))
 

@@ -6,10 +6,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rich.text import Text
 from textual.content import Content
 from textual.widgets import DataTable
 
+from cook2ltl.text_safety import literal
+from cook2ltl.ui.literal import shown
 from cook2ltl.ui.widgets.entry_detail import check_content
 
 if TYPE_CHECKING:
@@ -41,8 +42,8 @@ class ReductionsTable(DataTable):
             for frame in step.frames:
                 for action in actions_of(frame):
                     number += 1
-                    self.add_row(str(number), str(step.index + 1), Text(action.text()), _muted("pending"), "", "",
-                                 Text(""), key=str(number))
+                    self.add_row(str(number), str(step.index + 1), literal(action.text()), _muted("pending"), "",
+                                 "", literal(""), key=str(number))
         self._mark_working(1)
 
     def show_result(self, number: int, result: ActionResult) -> None:
@@ -56,7 +57,7 @@ class ReductionsTable(DataTable):
         self.update_cell(key, "reduction", reduction_label(result))
         self.update_cell(key, "LLM s", f"{seconds:.1f}" if seconds is not None else "", update_width=True)
         self.update_cell(key, "kitchen", check_content(result.validation.status) if result.validation else "")
-        self.update_cell(key, "plan", Text(plan), update_width=True)
+        self.update_cell(key, "plan", literal(plan), update_width=True)
         self._mark_working(number + 1)
 
     def highlighted(self) -> ActionResult | None:
@@ -87,26 +88,29 @@ def result_detail(result: ActionResult | None) -> Content:
     if result is None:
         return Content("")
     reduction = result.reduction
-    lines = [Content(reduction.action.text()).stylize("bold") + Content(f" · {reduction.source.value}")]
-    lines += [Content(f"  {call.text()}") for call in result.plan or reduction.body]
-    lines += [Content(f"  ✗ {line} (not admissible, dropped)").stylize("$text-error") for line in reduction.dropped]
+    lines = [shown(reduction.action.text()).stylize("bold") + shown(f" · {reduction.source.value}")]
+    lines += [shown(f"  {call.text()}") for call in result.plan or reduction.body]
+    lines += [shown(f"  ✗ {line} (not admissible, dropped)").stylize("$text-error") for line in reduction.dropped]
     check = result.validation
     if check is not None:
-        lines.append(Content("kitchen check ") + check_content(check.status) + Content(f" in {check.scene or '—'}"))
-        lines += [Content(f"  ! {message}").stylize("$text-error") for message in check.messages()]
+        lines.append(Content("kitchen check ") + check_content(check.status) + shown(f" in {check.scene or '—'}"))
+        lines += [shown(f"  ! {message}").stylize("$text-error") for message in check.messages()]
     for number, attempt in enumerate(result.attempts, start=1):
         lines.append(_muted(f"attempt {number} (failed the check): {' · '.join(c.text() for c in attempt.body)}"))
     return Content("\n").join(lines)
 
 
-def summary(translation: Translation) -> str:
+def summary(translation: Translation) -> Content:
+    """The translation's counts and rates, after why any library verbs were not offered to the model."""
     from cook2ltl.cli.translate_command import rates_line
 
     stats: Stats = translation.stats
-    return (f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} cached, "
-            f"{stats.llm_calls} by the model ({stats.llm_seconds:.1f} s LLM time, {stats.new_entries} new library "
-            f"entries pending review); {stats.seconds:.1f} s in all\n{rates_line(translation)}")
+    skipped = [shown(f"! {reason}").stylize("$text-warning") for reason in translation.skipped_verbs]
+    return Content("\n").join([*skipped, shown(
+        f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} cached, "
+        f"{stats.llm_calls} by the model ({stats.llm_seconds:.1f} s LLM time, {stats.new_entries} new library "
+        f"entries pending review); {stats.seconds:.1f} s in all\n{rates_line(translation)}")])
 
 
 def _muted(text: str) -> Content:
-    return Content(text).stylize("$text-muted")
+    return shown(text).stylize("$text-muted")

@@ -6,6 +6,8 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal
 from textual.widgets import Label, ProgressBar
 
+from cook2ltl.ui.literal import shown
+
 
 class WorkStatus(Horizontal):
     def compose(self) -> ComposeResult:
@@ -16,7 +18,7 @@ class WorkStatus(Horizontal):
         self.query_one(ProgressBar).display = False  # until a job reports a total
 
     def show(self, text: str, done: int | None = None, total: int | None = None) -> None:
-        self.query_one("#status-text", Label).update(text)
+        self.query_one("#status-text", Label).update(shown(text))
         bar = self.query_one(ProgressBar)
         bar.display = total is not None and total > 0
         if bar.display:

@@ -7,6 +7,8 @@ from typing import TYPE_CHECKING
 from textual.content import Content
 from textual.widgets import Static
 
+from cook2ltl.ui.literal import shown, shown_styled
+
 if TYPE_CHECKING:
     from cook2ltl.domain import Frame, ParsedRecipe, Step
 
@@ -30,9 +32,8 @@ def legend() -> Content:
 
 def step_content(step: Step) -> Content:
     start = step.sentence.start
-    sentence = Content(step.sentence.text)
-    for span in step.spans:
-        sentence = sentence.stylize(LABEL_STYLE[span.label.value], span.start - start, span.end - start)
+    sentence = shown_styled(step.sentence.text, [(span.start - start, span.end - start, LABEL_STYLE[span.label.value])
+                                                 for span in step.spans])
     text = Content(f"{step.index + 1:>3}  ").stylize("$text-muted") + sentence
     frames = [frame_content(frame) for frame in step.frames]
     if frames:
@@ -49,9 +50,9 @@ def frame_content(frame: Frame) -> Content:
     """verb(what, where, …) with each argument in its category's style; * marks one zero anaphora inferred."""
     from cook2ltl.domain import ARGUMENT_LABELS
 
-    arguments = [Content(argument.span.text + ("*" if argument.inferred else "")).stylize(LABEL_STYLE[label.value])
+    arguments = [shown(argument.span.text + ("*" if argument.inferred else "")).stylize(LABEL_STYLE[label.value])
                  for label in ARGUMENT_LABELS for argument in frame.arguments(label)]
-    call = Content(frame.name).stylize(LABEL_STYLE["VERB"]) + Content("(") + Content(", ").join(arguments) + Content(")")
+    call = shown(frame.name).stylize(LABEL_STYLE["VERB"]) + Content("(") + Content(", ").join(arguments) + Content(")")
     return Content("not ").stylize("bold $text-error") + call if frame.negated else call
 
 

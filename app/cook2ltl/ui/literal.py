@@ -1,0 +1,31 @@
+"""Text from a recipe, a library, a file or a model as the app shows it: literally.
+
+Textual reads markup in the strings given to Static, Label, DataTable cells and notifications, and sends
+control characters in any text to the terminal as they are. `shown` gives Content, which is never read as
+markup, with the controls written out as escapes (cook2ltl.text_safety).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from itertools import accumulate
+
+from textual.content import Content
+
+from cook2ltl.text_safety import visible
+
+
+def shown(text: object) -> Content:
+    """`text` as Content the app shows exactly: "[b]x\\x1b" appears as [b]x\\x1b, in no style."""
+    return Content(visible(str(text)))
+
+
+def shown_styled(text: str, styles: Iterable[tuple[int, int, str]]) -> Content:
+    """`text` shown literally with (start, end, style) ranges of it styled; a range keeps covering its
+    characters when a control before it is written out longer."""
+    pieces = [visible(char) for char in text]
+    offsets = list(accumulate((len(piece) for piece in pieces), initial=0))
+    content = Content("".join(pieces))
+    for start, end, style in styles:
+        content = content.stylize(style, offsets[start], offsets[end])
+    return content
