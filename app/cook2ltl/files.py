@@ -51,8 +51,11 @@ def read_toml(path: Path, limit: int, what: str, hint: str) -> dict:
     text = read_text(path, limit, what, hint)
     try:
         return tomllib.loads(text)
-    except ValueError as error:  # syntax, or an integer of thousands of digits
+    except tomllib.TOMLDecodeError as error:
         raise UserError(f"The {what} {shown(path)} is not valid TOML: {error}", hint) from None
+    except ValueError:  # an integer of thousands of digits, past Python's limit on converting one
+        raise UserError(f"The {what} {shown(path)} is not valid TOML: it holds a number too long to read.",
+                        hint) from None
     except RecursionError:
         raise UserError(f"The {what} {shown(path)} is not valid TOML: it is nested too deeply.", hint) from None
 

@@ -22,6 +22,7 @@ from cook2ltl.paths import shown
 MAX_TEXT = 200  # a label, a key binding, a set's name
 MAX_PATH_TEXT = 4096
 
+_PRINTABLE = r"[^\x00-\x1f\x7f-\x9f]"  # no control character, so a value stays on its line
 T = TypeVar("T", bound="Table")
 _SHORT = reprlib.Repr()  # a value as an error shows it: short, on one line
 _SHORT.maxstring = _SHORT.maxother = 60
@@ -40,7 +41,8 @@ PddlName = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_-]*$", max_l
                      Field(description="a PDDL name such as filled-with (a-z, 0-9, _ and -)")]
 PathText = Annotated[str, StringConstraints(min_length=1, max_length=MAX_PATH_TEXT)]
 FileName = Annotated[PathText, Field(description="the path of a file")]
-Text = Annotated[str, StringConstraints(pattern=r"^[^\x00-\x1f\x7f]*\S[^\x00-\x1f\x7f]*$", max_length=MAX_TEXT),
+Text = Annotated[str, StringConstraints(pattern=rf"^{_PRINTABLE}*[^\s\x00-\x1f\x7f-\x9f]{_PRINTABLE}*$",
+                                        max_length=MAX_TEXT),
                  Field(description=f"text on one line, not blank, at most {MAX_TEXT} characters")]
 
 

@@ -45,10 +45,12 @@ def bench_command(
                                                                    "(make test runs 60)."),
 ) -> None:
     """Measure and write bench/results/<name>.json and .md (a benchmark, not a test: it takes long)."""
+    from cook2ltl import paths
     from cook2ltl.reduce.llm import DEFAULT_MODEL
 
     console = Console(stderr=True)
     echo = lambda text: console.print(text, highlight=False, markup=False, soft_wrap=True)  # noqa: E731
+    out = paths.output_folder(out, "--out")  # made now: a bad folder fails before the benchmark, not after it
     model = model or (SMOKE_MODEL if smoke else DEFAULT_MODEL)
     chosen = [b for b in Benchmark if b != Benchmark.ALL] if which == Benchmark.ALL else [which]
     if Benchmark.TABLE1 in chosen:

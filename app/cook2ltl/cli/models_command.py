@@ -94,7 +94,7 @@ def eval_ner_command(
 
     settings = load_settings()
     if checkpoint:
-        settings = replace(settings, ner=replace(settings.ner, checkpoint=checkpoint))
+        settings = replace(settings, ner=replace(settings.ner, checkpoint=paths.user_path(checkpoint, "--checkpoint")))
     data = paths.models_dir() / load_manifest()[SPAN_MODEL].data
     report = validate(span_extractor(settings), data)
     rows = {"overall": report.overall, **{label.value: score for label, score in report.per_label.items()}}

@@ -21,7 +21,14 @@ WRITER_STYLE = {"model": "magenta", "library": "cyan", "recipe": "green", "plann
 
 def is_recipe(target: str) -> bool:
     """A rollout target is a recipe when it names a file (or is -, standard input)."""
-    return target == "-" or Path(target).is_file()
+    from cook2ltl import files
+
+    if target == "-":
+        return True
+    try:
+        return files.is_regular_file(Path(target).expanduser())
+    except RuntimeError:  # ~name of no such user: no file, so a task or a formula
+        return False
 
 
 def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | None, variant: Variant,

@@ -13,6 +13,7 @@ import typer
 from rich.console import Console
 from rich.text import Text
 
+from cook2ltl import paths
 from cook2ltl.cli.recipe_rollout import is_recipe, rollout_recipe
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline import Variant
@@ -69,6 +70,7 @@ def rollout_command(
     from cook2ltl.kitchen.trial import TrialDone, run_trial, trial_json
     from cook2ltl.settings import load_settings
 
+    library = paths.user_path(library, "--library") if library else None
     if list_tasks:
         show_tasks(Console(), as_json)
         return

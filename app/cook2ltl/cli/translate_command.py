@@ -10,6 +10,7 @@ import typer
 from rich.console import Console
 from rich.text import Text
 
+from cook2ltl import paths
 from cook2ltl.cli.inputs import read_recipe
 from cook2ltl.pipeline import Translation, Variant
 from cook2ltl.translate.rates import rates
@@ -52,6 +53,8 @@ def translate_command(
     from cook2ltl.reduce.reduction import ReductionSettings
     from cook2ltl.translate.serialize import translation_json
 
+    library = paths.user_path(library, "--library") if library else None
+    pddl = paths.output_folder(pddl, "--pddl") if pddl else None  # made now: a bad folder fails before the run
     text = read_recipe(recipe)
     errors = Console(stderr=True)
     with open_translator(load_primitives(primitives), model, library, variant, ReductionSettings(max_lines, comments),
@@ -75,7 +78,12 @@ def _export(translation: Translation, grounding, folder: Path, errors: Console) 
     results = [r for step in translation.steps for r in step.actions]
     plan = [call for r in results for call in r.plan]
     effects = [fact for r in results if r.check is not None for fact in r.check.effect]
-    for path in export_pddl(grounding.world, translation.world_start, plan, effects, folder):
+    try:
+        written = export_pddl(grounding.world, translation.world_start, plan, effects, folder)
+    except OSError as error:  # the folder was made before the run; a full disk, or a file put in the way since
+        raise UserError(f"Cannot write the PDDL files into {paths.shown(folder)}: {error.strerror or error}.",
+                        "give --pddl a folder you may write to.") from None
+    for path in written:
         errors.print(f"wrote {path}")
 
 

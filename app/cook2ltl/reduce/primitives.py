@@ -114,7 +114,8 @@ def _primitive_set(file: PrimitiveSetFile, path: Path) -> PrimitiveSet:
 def _world(table: WorldTable, path: Path) -> WorldSpec:
     domain = _beside(path, table.domain, "[world] domain")
     if not files.is_regular_file(domain):
-        raise UserError(f"{paths.shown(path)}: the domain file {paths.shown(domain)} does not exist.", HINT)
+        raise UserError(f"{paths.shown(path)}: the domain file {paths.shown(domain)} is missing or not a regular "
+                        "file.", HINT)
     kitchen = None if table.kitchen == THOR_KITCHENS else _beside(path, table.kitchen, "[world] kitchen")
     kit = None if table.kit is None else tuple((goal, tuple(names)) for goal, names in table.kit.items())
     return WorldSpec(domain, kitchen, tuple(sorted(table.states.items())), kit, table.planner, table.liquids)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from dataclasses import dataclass
 from functools import cache, cached_property
 from pathlib import Path
@@ -39,7 +40,7 @@ class Domain:
 
 
 def load_domain(path: Path) -> Domain:
-    return _load(Path(path).resolve())
+    return _load(Path(os.path.realpath(path)))  # not Path.resolve, which raises on a symlink loop
 
 
 @cache

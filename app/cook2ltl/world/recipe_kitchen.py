@@ -25,6 +25,7 @@ KITCHEN_BYTES = 1_000_000  # the recipe kitchen is 4 kB
 MAX_NAMES = 5000
 Place = Annotated[str, StringConstraints(pattern=r"^([a-z][a-z0-9_]*)?$", max_length=64),
                   Field(description='a kitchen object, or "" for nowhere')]
+Kinds = Annotated[list[PddlName], Field(max_length=MAX_NAMES, description="a list of kinds such as portable")]
 
 
 @dataclass(frozen=True)
@@ -68,7 +69,7 @@ class _Planning(Table):
 
 
 class _KitchenFile(Table):
-    kinds: dict[Identifier, Annotated[list[PddlName], Field(max_length=MAX_NAMES)]] = Field(
+    kinds: dict[Identifier, Kinds] = Field(
         max_length=MAX_NAMES, description='a table of objects and their kinds, e.g. pot = ["portable", "vessel"]')
     start: dict[Identifier, Place] = Field({}, max_length=MAX_NAMES, description="a table of objects and places")
     ingredients: _Ingredients = Field(_Ingredients(), description="a table")
