@@ -95,6 +95,7 @@ LONG_NAME = "x" * 300
      "[limits] steps must be a whole number from 1 to 100,000, not 0.5"),
     ("primitives at /dev/zero", ["translate", "recipe.txt", "--primitives", "/dev/zero"], {}, "primitive set"),
     ("library name too long", ["translate", "recipe.txt", "--library", f"/tmp/{LONG_NAME}"], {}, "--library"),
+    ("library list, name too long", ["library", "list", "--library", f"~/{LONG_NAME}"], {}, "--library"),
     ("pddl under a file", ["translate", "recipe.txt", "--pddl", "recipe.txt/pddl"], {},
      "--pddl recipe.txt/pddl cannot be a folder to write into"),
     ("bench out is a file", ["bench", "micro", "--out", "recipe.txt"], {}, "--out recipe.txt cannot be a folder"),

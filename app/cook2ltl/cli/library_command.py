@@ -31,6 +31,7 @@ def _open(library: Path | None):
     from cook2ltl import paths
     from cook2ltl.library import Library
 
+    library = paths.user_path(library, "--library") if library else None
     return Library(library or paths.library_file())
 
 
