@@ -143,8 +143,8 @@ def test_another_effect_in_an_import_is_a_conflict_or_replaces_a_pending_entry(l
     other.close()
 
 
-@pytest.mark.parametrize("effect, message", [("boiled(what)", '"effect" must be a list'),
-                                             ([1], '"effect" must be a list of atoms'),
+@pytest.mark.parametrize("effect, message", [("boiled(what)", '"effect": must be a list, not "boiled'),
+                                             ([1], '"effect" item 1: must be a string, not 1'),
                                              (["ready(what)"], 'entry 2: "effect": \'ready\\(what\\)\': ready is')])
 def test_a_malformed_effect_in_an_import_is_refused_before_anything_is_written(library, tmp_path, effect, message):
     library.add("recipe", "boil", ("what",), BOIL, "qwen", "h", effect=["boiled(what)"])

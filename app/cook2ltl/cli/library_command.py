@@ -27,12 +27,13 @@ STATUS_STYLE = {"pending": "yellow", "approved": "green", "rejected": "dim"}
 CHECK_STYLE = {"passed": "green", "failed": "bold red", "unchecked": "dim"}
 
 
-def _open(library: Path | None):
+def _open(library: Path | None, read_only: bool = False):
+    """The library; `read_only` for a command that only reads (it then never waits for another's write)."""
     from cook2ltl import paths
     from cook2ltl.library import Library
 
     library = paths.user_path(library, "--library") if library else None
-    return Library(library or paths.library_file())
+    return Library(library or paths.library_file(), read_only)
 
 
 def _by(by: str | None) -> str:
@@ -54,7 +55,7 @@ def list_command(library: Optional[Path] = LibraryOption,
         raise UserError(f"--status {status!r} is not one of {', '.join(STATUS_STYLE)}.", "leave it out to list all.")
     from cook2ltl.library.store import NO_PLAN
 
-    store = _open(library)
+    store = _open(library, read_only=True)
     entries = store.search(search) if search else store.entries()
     table = Table("id", "set", "action", "status", "check", "v", "reviewed", "model", title=literal(store.path))
     for entry in entries:
@@ -77,7 +78,7 @@ def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None
     from cook2ltl.library.effect import shown_effect
     from cook2ltl.library.store import shown_body
 
-    entry = _open(library).get(entry_id)
+    entry = _open(library, read_only=True).get(entry_id)
     console = terminal(highlight=False)
     review = (f" by {entry.reviewed_by} at {entry.reviewed_at}" if entry.reviewed_by
               else "" if entry.status.value != "pending" else ", not reviewed yet")
@@ -173,7 +174,8 @@ def edit_command(entry_id: int,
 def _save(store, entry, body: str, by: str | None, checked, note: str, effect, console: Console) -> None:
     from cook2ltl.library.effect import shown_effect
 
-    edited = store.edit(entry.id, body, _by(by), checked.validation, checked.problems, note, effect)
+    # `expected`: if someone approved or edited the entry meanwhile, nothing is saved over their change.
+    edited = store.edit(entry.id, body, _by(by), checked.validation, checked.problems, note, effect, expected=entry)
     console.print(styled(f"entry {entry.id} {edited.action}: version {edited.version}, kitchen check ",
                          _check(edited.validation), f", effect {shown_effect(edited.effect)}, ", _status("pending"),
                          " review"))
@@ -196,14 +198,16 @@ def _effect_option(atoms: list[str] | None, clear: bool, no_body: bool):
 
 
 def _read_body(body_file: str) -> str:
-    from cook2ltl.errors import UserError
+    """The body from a regular file or standard input: at most limits.BODY_BYTES of UTF-8 text."""
+    from cook2ltl.files import decoded, read_bytes, read_stdin
+    from cook2ltl.library.limits import BODY_BYTES
+    from cook2ltl.paths import shown, user_path
 
-    try:
-        text = sys.stdin.read() if body_file == "-" else Path(body_file).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        raise UserError(f"Cannot read the body from {body_file}: {getattr(error, 'strerror', None) or error}.",
-                        "give a text file with one call per line, or - to read standard input.") from error
-    return text.strip()
+    hint = "give a text file with one call per line, or - to read standard input."
+    if body_file == "-":
+        return decoded(read_stdin(BODY_BYTES, hint), "Standard input").strip()
+    path = user_path(body_file, "--body-file")
+    return decoded(read_bytes(path, BODY_BYTES, "body file", hint), f"The body file {shown(path)}").strip()
 
 
 def _primitive_set(choice: str, name: str):
@@ -234,7 +238,7 @@ def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> N
     """Every body the entry had, who wrote it and when, and who approved or rejected which version."""
     from cook2ltl.library.store import shown_body
 
-    store = _open(library)
+    store = _open(library, read_only=True)
     entry = store.get(entry_id)
     table = Table("v", "at", "by", "check", "note", "body", title=literal(f"entry {entry_id} {entry.action}"),
                   show_lines=True)
@@ -264,7 +268,7 @@ def export_command(file: Path, library: Optional[Path] = LibraryOption) -> None:
     """Write every entry with its history to a JSON file, for another lab or robot."""
     from cook2ltl.library.exchange import export_library
 
-    store = _open(library)
+    store = _open(library, read_only=True)
     count = export_library(store, file)
     terminal(highlight=False).print(f"{count} entr{'y' if count == 1 else 'ies'} from {store.path} written to {file}")
 
@@ -274,11 +278,14 @@ def import_command(file: Path, library: Optional[Path] = LibraryOption, by: Opti
                    replace_pending: bool = typer.Option(False, "--replace-pending",
                                                         help="A pending entry with another body gets the file's "
                                                              "body as a new version (approved ones are never "
-                                                             "replaced).")) -> None:
+                                                             "replaced)."),
+                   force: bool = typer.Option(False, "--force", help="Keep the approval of approved entries whose "
+                                                                     "body failed the kitchen check (as approve "
+                                                                     "--force).")) -> None:
     """Add the entries of an export file: new ones added, the same ones left, conflicts reported, never overwritten."""
     from cook2ltl.library.exchange import import_library
 
-    report = import_library(_open(library), file, _by(by), replace_pending)
+    report = import_library(_open(library), file, _by(by), replace_pending, force)
     console = terminal(highlight=False)
     for heading, items, style in (("added", report.added, "green"), ("replaced", report.replaced, "yellow"),
                                   ("conflict", report.conflicts, "bold red")):

@@ -1,4 +1,4 @@
-"""The action library's schema: numbered migrations, run in one transaction when a file is opened.
+"""The action library's schema: numbered migrations, run in one transaction when an older file is opened.
 
 MIGRATIONS[n] takes a library from schema version n to n + 1 (SQLite's `user_version`). A migration is
 never edited once released: a library written by an older cook2ltl is brought forward in place.
@@ -11,6 +11,7 @@ from pathlib import Path
 from sqlite_utils import Database
 
 from cook2ltl.errors import UserError
+from cook2ltl.paths import shown
 
 TABLE = "actions"
 VERSIONS = "versions"
@@ -92,23 +93,34 @@ MIGRATIONS = (_create_actions, _review_versions_and_search, _review_log, _intend
 SCHEMA_VERSION = len(MIGRATIONS)
 
 
+def schema_version(db: Database, path: Path) -> int:
+    """The file's schema version, read without a lock; a newer schema or another program's database is refused."""
+    conn, newest = db.conn, len(MIGRATIONS)
+    version = conn.execute("PRAGMA user_version").fetchone()[0]
+    if version > newest:
+        raise UserError(f"The action library {shown(path)} has schema version {version}; this cook2ltl knows "
+                        f"{newest}.", "upgrade cook2ltl, or use another --library.")
+    if version == 0 and conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]:
+        raise UserError(f"{shown(path)} is an SQLite file but not an action library.",
+                        "give --library (or COOK2LTL_LIBRARY) a new path.")
+    return version
+
+
+def is_older(db: Database, path: Path) -> bool:
+    """Whether the file needs a migration (a new, empty file does): the one check made on every open."""
+    return schema_version(db, path) < len(MIGRATIONS)
+
+
 def migrate(db: Database, path: Path) -> None:
     """Bring the file to the newest schema; BEGIN IMMEDIATE makes a second process wait, then find it done."""
-    newest = len(MIGRATIONS)
-    conn = db.conn
+    conn, newest = db.conn, len(MIGRATIONS)
     conn.execute("BEGIN IMMEDIATE")
     try:
-        version = conn.execute("PRAGMA user_version").fetchone()[0]
-        if version > newest:
-            raise UserError(f"The action library {path} has schema version {version}; this cook2ltl knows {newest}.",
-                            "upgrade cook2ltl, or use another --library.")
-        if version == 0 and conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]:
-            raise UserError(f"{path} is an SQLite file but not an action library.",
-                            "give --library (or COOK2LTL_LIBRARY) a new path.")
-        for number in range(version, newest):
+        for number in range(schema_version(db, path), newest):
             MIGRATIONS[number](db)
         conn.execute(f"PRAGMA user_version = {newest}")
         conn.execute("COMMIT")
     except BaseException:
-        conn.execute("ROLLBACK")
+        if conn.in_transaction:  # SQLite may have rolled back already (a full disk)
+            conn.execute("ROLLBACK")
         raise

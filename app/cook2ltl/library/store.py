@@ -9,75 +9,42 @@ person approves it, and that approval wins over any later reduction. An entry wi
 that the model wrote no admissible plan: it spares asking the model again and shows the lab a body to
 write; it is never approved, and never a verb that other bodies call. The schema and its migrations are
 in `schema`. Each thread gets its own connection (sqlite3 refuses to share one), WAL lets a reader and a
-writer work side by side, and every write is one transaction.
+writer work side by side, and every write is one transaction that reads what it changes (a status, a version)
+inside it. Every SQLite failure reaches the caller as a UserError that names it (see `faults`).
 """
 
 from __future__ import annotations
 
+import functools
 import getpass
 import json
 import os
 import sqlite3
 import threading
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
-from dataclasses import dataclass, replace
-from enum import StrEnum
+from dataclasses import replace
 from pathlib import Path
+from typing import TypeVar
 
 from sqlite_utils import Database
 
 from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.library import versions
+from cook2ltl.library.connection import open_library
+from cook2ltl.library.entry import NO_PLAN, LibraryEntry, Status, as_row, effect_column, effect_of, \
+    from_row, shown_body
 from cook2ltl.library.effect import KEEP, Keep, checked_effect, shown_effect
-from cook2ltl.library.schema import SCHEMA_VERSION, TABLE, migrate
+from cook2ltl.library.faults import SQL_ERROR, reported
+from cook2ltl.library.schema import SCHEMA_VERSION, TABLE
 from cook2ltl.library.versions import Review, Version, checked, now
-from cook2ltl.reduce.body import is_empty
+from cook2ltl.paths import shown, user_path
 
 __all__ = ["NO_PLAN", "SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer",
            "shown_body"]
 REPLACER = "cook2ltl"  # who rejects a pending entry that a new reduction replaces
-NO_PLAN = "(no plan)"  # how an empty body is shown
 SQLITE_INTEGERS = (-2**63, 2**63 - 1)  # the ids sqlite can store
-
-
-class Status(StrEnum):
-    PENDING = "pending"  # learnt from a model (or edited), used, not yet reviewed
-    APPROVED = "approved"
-    REJECTED = "rejected"  # never used again; the action is reduced anew when met
-
-
-@dataclass(frozen=True)
-class LibraryEntry:
-    id: int
-    primitives: str
-    verb: str
-    signature: tuple[str, ...]
-    body: str
-    status: Status
-    model: str
-    prompt_hash: str
-    created: str
-    validation: str = "unchecked"  # passed, failed or unchecked: the kitchen check of the current body
-    problems: tuple[str, ...] = ()  # that check's messages
-    reviewed_by: str | None = None  # who set the current status, and when (None: nobody since the last body)
-    reviewed_at: str | None = None
-    example: tuple[tuple[str, str], ...] = ()  # placeholder → value of the action it was learnt from
-    version: int = 1
-    effect: tuple[str, ...] | None = None  # atom templates over the slots, such as boiled(what); None: not recorded
-
-    @property
-    def action(self) -> str:
-        return f"{self.verb}({', '.join(self.signature)})"
-
-    @property
-    def has_plan(self) -> bool:
-        """False for the record of a reduction with no admissible plan (an empty body)."""
-        return not is_empty(self.body)
-
-
-def shown_body(body: str) -> str:
-    return NO_PLAN if is_empty(body) else body
+Method = TypeVar("Method", bound=Callable)
 
 
 def reviewer() -> str:
@@ -90,9 +57,21 @@ def reviewer() -> str:
                         "set COOK2LTL_USER to a UTF-8 name, or pass --by NAME.")
 
 
+def _reported(method: Method) -> Method:
+    """A Library method whose SQLite failures (a lock held too long, a full disk …) are UserErrors."""
+    @functools.wraps(method)
+    def reporting(self: Library, *args, **kwargs):
+        with reported(self.path):
+            return method(self, *args, **kwargs)
+    return reporting  # type: ignore[return-value]
+
+
 class Library:
-    def __init__(self, path: Path) -> None:
-        self.path = path
+    def __init__(self, path: Path | str, read_only: bool = False) -> None:
+        """The library at `path` (`~` expanded). `read_only`: for commands that only read; nothing can be written
+        then, and opening needs no lock (unless the file is new or of an older schema)."""
+        self.path = user_path(path, "The action library")
+        self.read_only = read_only
         self._local = threading.local()
         self._opened: list[Database] = []
         self._lock = threading.Lock()
@@ -100,43 +79,52 @@ class Library:
 
     # --- reading -------------------------------------------------------------------------------------------
 
+    @_reported
     def lookup(self, primitives: str, verb: str, signature: tuple[str, ...],
                approved_only: bool = False) -> LibraryEntry | None:
         """The live entry for an action; with `approved_only` (lab mode) only a reviewed and approved one."""
         rows = self._db()[TABLE].rows_where(
             f"primitives = ? AND verb = ? AND signature = ? AND {_usable(approved_only)}",
             [primitives, verb, ",".join(signature)], limit=1)
-        return next((_entry(row) for row in rows), None)
+        return next((from_row(row) for row in rows), None)
 
+    @_reported
     def live(self, primitives: str, approved_only: bool = False) -> tuple[LibraryEntry, ...]:
         """The entries whose verbs later prompts and bodies may call, oldest first: those with a plan."""
         rows = self._db()[TABLE].rows_where(f"primitives = ? AND trim(body) != '' AND {_usable(approved_only)}",
                                             [primitives], order_by="id")
-        return tuple(_entry(row) for row in rows)
+        return tuple(from_row(row) for row in rows)
 
+    @_reported
     def entries(self) -> tuple[LibraryEntry, ...]:
-        return tuple(_entry(row) for row in self._db()[TABLE].rows_where(order_by="id"))
+        return tuple(from_row(row) for row in self._db()[TABLE].rows_where(order_by="id"))
 
+    @_reported
     def get(self, entry_id: int) -> LibraryEntry:
-        return _entry(self._row(entry_id))
+        return from_row(self._row(entry_id))
 
+    @_reported
     def history(self, entry_id: int) -> tuple[Version, ...]:
         """Every body the entry had, oldest first; the last is the current one."""
         self._row(entry_id)
         return versions.history(self._db(), entry_id)
 
+    @_reported
     def reviews(self, entry_id: int) -> tuple[Review, ...]:
         """Every approval and rejection of the entry (and return to pending), oldest first."""
         self._row(entry_id)
         return versions.reviews(self._db(), entry_id)
 
+    @_reported
     def search(self, text: str) -> tuple[LibraryEntry, ...]:
         """Entries whose verb or body match an FTS5 query (words, "a phrase", pick*, boil OR fry), best first."""
         if not text.strip():
             return self.entries()
         try:
-            return tuple(_entry(row) for row in self._db()[TABLE].search(text))
+            return tuple(from_row(row) for row in self._db()[TABLE].search(text))
         except sqlite3.OperationalError as error:
+            if error.sqlite_errorcode != SQL_ERROR:  # a lock or a full disk, not the query
+                raise
             raise UserError(f"Cannot search the library for {text!r}: {error}.",
                             'search for words (boil pot), a prefix (pick*), or put text with punctuation '
                             'in double quotes ("put($what").') from error
@@ -145,10 +133,28 @@ class Library:
 
     @contextmanager
     def transaction(self) -> Iterator[Library]:
-        """Several writes as one: all of them, or (on an exception) none. Writes inside nest as savepoints."""
-        with self._writing():
+        """Several writes as one: all of them, or (on an exception) none. Writes inside nest as savepoints;
+        reads inside see what no other process can change until the end (the write lock is held)."""
+        with reported(self.path), self._writing():
             yield self
 
+    @contextmanager
+    def snapshot(self) -> Iterator[Library]:
+        """Several reads as one: all of them see the library as it was at the first (WAL keeps that snapshot
+        while other processes write), and none waits for a lock."""
+        db = self._db()
+        if db.conn.in_transaction:
+            yield self
+            return
+        with reported(self.path):
+            db.conn.execute("BEGIN")
+        try:
+            yield self
+        finally:
+            if db.conn.in_transaction:
+                db.conn.execute("ROLLBACK")  # it only read
+
+    @_reported
     def add(self, primitives: str, verb: str, signature: tuple[str, ...], body: str, model: str, prompt_hash: str,
             replacing: int | None = None, validation: str = "unchecked", problems: Sequence[str] = (),
             example: Mapping[str, str] | None = None, effect: Sequence[str] | None = None) -> LibraryEntry:
@@ -164,10 +170,10 @@ class Library:
             with self._writing():
                 old = self._row(replacing, missing_ok=True) if replacing is not None else None
                 if old is not None and old["status"] == Status.APPROVED:
-                    return _entry(old)
+                    return from_row(old)
                 if old is not None and old["status"] == Status.PENDING:
                     self._set_status(replacing, Status.REJECTED, REPLACER)
-                new_id = db[TABLE].insert(_columns(entry)).last_pk
+                new_id = db[TABLE].insert(as_row(entry)).last_pk
                 versions.record(db, Version(new_id, 1, body, validation, entry.problems, model, entry.created,
                                             "learnt"))
         except sqlite3.IntegrityError:
@@ -177,6 +183,7 @@ class Library:
             return existing
         return replace(entry, id=new_id)
 
+    @_reported
     def set_status(self, entry_id: int, status: Status | str, by: str | None = None,
                    force: bool = False) -> LibraryEntry:
         """Approve, reject (or return to pending) an entry, recording who and when. An entry whose body failed
@@ -184,7 +191,7 @@ class Library:
         status = Status(status)
         with self._writing():
             row = self._row(entry_id)
-            entry = _entry(row)
+            entry = from_row(row)
             if status == Status.APPROVED and not entry.has_plan:
                 raise UserError(f"Entry {entry_id} ({entry.action}) has no plan: there is nothing to approve.",
                                 f"write its body with `cook2ltl library edit {entry_id} --body-file FILE`, "
@@ -196,16 +203,27 @@ class Library:
             self._set_status(entry_id, status, by or reviewer())
         return self.get(entry_id)
 
+    @_reported
     def edit(self, entry_id: int, body: str, by: str, validation: str = "unchecked", problems: Sequence[str] = (),
-             note: str = "", effect: Sequence[str] | None | Keep = KEEP) -> LibraryEntry:
+             note: str = "", effect: Sequence[str] | None | Keep = KEEP,
+             expected: LibraryEntry | None = None) -> LibraryEntry:
         """A new body (or the same one with another effect) as a new version (the caller checks and validates the
         body first); the entry returns to pending, unreviewed, for someone to approve. `effect`: the new intended
-        effect (None: not recorded), checked before anything is written; KEEP leaves it as it is."""
+        effect (None: not recorded), checked before anything is written; KEEP leaves it as it is. `expected`: the
+        entry as the caller read it; if its status or version is another by now (someone approved or edited it
+        meanwhile), nothing is written and that is a UserError: compared and set in one transaction."""
         effect = effect if effect is KEEP else checked_effect(effect)
         with self._writing():
-            self._new_version(self._row(entry_id), body, by, validation, tuple(problems), note, effect)
+            row = self._row(entry_id)
+            if expected is not None and (row["status"], row["version"]) != (expected.status.value, expected.version):
+                raise UserError(f"Entry {entry_id} ({expected.action}) changed meanwhile: it is {row['status']} "
+                                f"version {row['version']} now, not {expected.status.value} version "
+                                f"{expected.version}; nothing saved.",
+                                f"look at it with `cook2ltl library show {entry_id}`, then try again.")
+            self._new_version(row, body, by, validation, tuple(problems), note, effect)
         return self.get(entry_id)
 
+    @_reported
     def undo(self, entry_id: int, by: str) -> LibraryEntry:
         """Bring back the body before the current one, as a new version (pending again); history is never lost."""
         with self._writing():
@@ -218,12 +236,13 @@ class Library:
                               f"undo: back to version {target.version}", KEEP, restores=target.version)
         return self.get(entry_id)
 
+    @_reported
     def insert(self, entry: LibraryEntry, history: Sequence[Version], reviews: Sequence[Review] = ()) -> LibraryEntry:
         """Store an entry as it is, status, every version and review included (an import); its id is new."""
         db = self._db()
         with self._writing():
             try:
-                new_id = db[TABLE].insert(_columns(replace(entry, version=history[-1].version))).last_pk
+                new_id = db[TABLE].insert(as_row(replace(entry, version=history[-1].version))).last_pk
             except sqlite3.IntegrityError as error:
                 raise self._taken(entry) from error
             for version in history:
@@ -264,7 +283,7 @@ class Library:
         if SQLITE_INTEGERS[0] <= entry_id <= SQLITE_INTEGERS[1]:  # sqlite3 overflows on any other int
             row = next(self._db()[TABLE].rows_where("id = ?", [entry_id]), None)
         if row is None and not missing_ok:
-            raise UserError(f"No entry {entry_id} in the action library {self.path}.",
+            raise UserError(f"No entry {entry_id} in the action library {shown(self.path)}.",
                             "`cook2ltl library list` shows them.")
         return row
 
@@ -281,7 +300,7 @@ class Library:
                      effect: tuple[str, ...] | None | Keep, restores: int | None = None) -> None:
         db = self._db()
         number = row["version"] + 1
-        old = _effect(row["effect"])
+        old = effect_of(row["effect"])
         effect = old if effect is KEEP else effect
         if effect != old:  # versions keep bodies only: the note tells the history of the new effect
             note = "; ".join(part for part in (note, f"effect: {shown_effect(effect)}") if part)
@@ -290,9 +309,9 @@ class Library:
             db.conn.execute(f"UPDATE {TABLE} SET body = ?, validation = ?, problems = ?, version = ?, status = ?, "
                             "reviewed_by = NULL, reviewed_at = NULL, effect = ? WHERE id = ?",
                             [body, validation, json.dumps(list(problems)), number, Status.PENDING.value,
-                             _effect_column(effect), row["id"]])
+                             effect_column(effect), row["id"]])
         except sqlite3.IntegrityError as error:
-            raise self._taken(_entry(row)) from error
+            raise self._taken(from_row(row)) from error
 
     def _taken(self, entry: LibraryEntry) -> UserError:
         live = self.lookup(entry.primitives, entry.verb, entry.signature)
@@ -306,67 +325,12 @@ class Library:
     def _db(self) -> Database:
         db = getattr(self._local, "db", None)
         if db is None:
-            db = self._connect()
+            db = open_library(self.path, self.read_only)
             self._local.db = db
             with self._lock:
                 self._opened.append(db)
         return db
 
-    def _connect(self) -> Database:
-        if self.path.exists() and not self.path.is_file():
-            raise UserError(f"The action library {self.path} is not a file.", "give --library a file path.")
-        try:
-            self.path.parent.mkdir(parents=True, exist_ok=True)
-            # Each thread keeps to its own connection; the flag only lets close() end them all.
-            conn = sqlite3.connect(self.path, check_same_thread=False)
-        except (OSError, sqlite3.Error) as error:
-            raise UserError(f"Cannot open the action library {self.path}: {error}.",
-                            "give --library (or COOK2LTL_LIBRARY) a writable path.") from error
-        try:
-            db = Database(conn)
-            conn.execute("PRAGMA busy_timeout = 10000")  # wait for another process's write
-            migrate(db, self.path)
-            db.enable_wal()  # after the check, so another program's SQLite file is left as it was
-        except sqlite3.DatabaseError as error:
-            conn.close()
-            raise UserError(f"{self.path} is not an action library ({error}).",
-                            "give --library (or COOK2LTL_LIBRARY) a new path, or move that file away.") from error
-        except BaseException:
-            conn.close()
-            raise
-        return db
-
 
 def _usable(approved_only: bool) -> str:
     return "status = 'approved'" if approved_only else "status != 'rejected'"
-
-
-def _columns(entry: LibraryEntry) -> dict:
-    """An entry as a row of `actions`, without its id."""
-    return {
-        "primitives": entry.primitives, "verb": entry.verb, "signature": ",".join(entry.signature),
-        "body": entry.body, "status": Status(entry.status).value, "model": entry.model,
-        "prompt_hash": entry.prompt_hash, "created": entry.created, "validation": checked(entry.validation),
-        "problems": json.dumps(list(entry.problems)), "reviewed_by": entry.reviewed_by,
-        "reviewed_at": entry.reviewed_at, "example": json.dumps(dict(entry.example)), "version": entry.version,
-        "effect": _effect_column(entry.effect),
-    }
-
-
-def _entry(row: dict) -> LibraryEntry:
-    return LibraryEntry(
-        id=row["id"], primitives=row["primitives"], verb=row["verb"],
-        signature=tuple(part for part in row["signature"].split(",") if part), body=row["body"],
-        status=Status(row["status"]), model=row["model"], prompt_hash=row["prompt_hash"], created=row["created"],
-        validation=row["validation"], problems=tuple(json.loads(row["problems"])), reviewed_by=row["reviewed_by"],
-        reviewed_at=row["reviewed_at"], example=tuple(json.loads(row["example"]).items()), version=row["version"],
-        effect=_effect(row["effect"]),
-    )
-
-
-def _effect_column(effect: tuple[str, ...] | None) -> str | None:
-    return None if effect is None else json.dumps(list(effect))
-
-
-def _effect(column: str | None) -> tuple[str, ...] | None:
-    return None if column is None else tuple(json.loads(column))
