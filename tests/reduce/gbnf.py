@@ -1,7 +1,8 @@
 """A test oracle for generated grammars: the GBNF subset they use, turned into a Python regex.
 
 The generated grammars are not recursive, so every rule can be inlined. Supported: rules `name ::= …`,
-"literals", [classes], (groups), alternation, and the ? * + {m,n} repetitions.
+"literals" (with llama.cpp's escapes: \\n \\r \\t \\" \\\\ \\xHH \\uHHHH \\UHHHHHHHH; any other is an error, as there),
+[classes], (groups), alternation, and the ? * + {m,n} repetitions.
 """
 
 from __future__ import annotations
@@ -9,7 +10,8 @@ from __future__ import annotations
 import re
 
 _TOKEN = re.compile(r'\s*("(?:[^"\\]|\\.)*"|\[(?:[^\]\\]|\\.)*\]|[a-z][a-z0-9-]*|[()|?*+]|\{\d+(?:,\d*)?\})')
-_ESCAPES = {"n": "\n", "t": "\t", '"': '"', "\\": "\\"}
+_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", '"': '"', "\\": "\\"}
+_ESCAPE = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|U[0-9a-fA-F]{8}|.)", re.DOTALL)
 
 
 def gbnf_regex(grammar: str) -> re.Pattern:
@@ -74,8 +76,17 @@ def _sequence(tokens: list[str], rules, stack) -> str:
 
 def _atom(token: str, rules, stack) -> str:
     if token.startswith('"'):
-        text = re.sub(r"\\(.)", lambda m: _ESCAPES[m.group(1)], token[1:-1])
+        text = _ESCAPE.sub(_unescape, token[1:-1])
         return "(?:" + re.escape(text) + ")"
     if token.startswith("["):
         return token.replace("\\n", "\n")
     return _rule(token, rules, stack)
+
+
+def _unescape(match: re.Match) -> str:
+    escape = match.group(1)
+    if escape[0] in "xuU" and len(escape) > 1:
+        return chr(int(escape[1:], 16))
+    if escape not in _ESCAPES:
+        raise ValueError(f"unknown escape \\{escape} in a literal")
+    return _ESCAPES[escape]

@@ -94,3 +94,50 @@ def test_a_temperature_is_a_state_not_a_duration():
     assert vocab.durations == () and "350_degrees" in vocab.states
     assert admits(vocab, Call("wait", ("oven", "350_degrees")))
     assert not admits(vocab, Call("wait", ("timer", "350_degrees")))
+
+
+# Verbs an imported library could hold: a quote that once broke every later grammar, one that widened the
+# grammar to any line, a line break, a rule of its own, controls.
+HOSTILE_VERBS = ('bad"verb', 'x" | [^\n]* | "y', "two\nlines", 'ok ::= [^"]*', "esc\x1b[2J", "back\\slash", "Boil",
+                 "boil me", "")
+
+
+def test_hostile_library_verbs_leave_every_grammar_as_narrow_as_without_them():
+    mash = action("mash", ("what", "potatoes"))
+    plain = vocabulary(RECIPE, [("boil", ("what",))], mash)
+    hostile = vocabulary(RECIPE, [("boil", ("what",)), *((verb, ("what",)) for verb in HOSTILE_VERBS),
+                                  ("blend", ('what"', "where"))], mash)
+    assert hostile == plain
+    for avoid in ((), ("put",)):
+        grammar = to_gbnf(hostile, max_lines=12, comments=True, avoid=avoid)
+        assert grammar == to_gbnf(plain, max_lines=12, comments=True, avoid=avoid)
+        assert accepts(grammar, body_text(["boil(potatoes)", "stir(potatoes)"]))  # valid, and as before
+        for verb in HOSTILE_VERBS:
+            assert not accepts(grammar, body_text([f"{verb}(potatoes)"])), verb
+        assert not accepts(grammar, body_text(["anything at all"]))
+
+
+def test_why_a_library_verb_is_not_offered():
+    from cook2ltl.reduce.grammar import unusable_verb
+    from cook2ltl.reduce.reduction import LibraryVerb, offered_verbs
+
+    library = [LibraryVerb("boil", ("what",), "pick_up($what)"), LibraryVerb('bad"verb', ("what",), ""),
+               LibraryVerb("blend", ("what", "x y"), "")]
+    offered, reasons = offered_verbs(library)
+    assert offered == library[:1]
+    assert reasons == (unusable_verb('bad"verb', ("what",)), unusable_verb("blend", ("what", "x y")))
+    assert "'bad\"verb' is not a lower-case identifier" in reasons[0] and "blend" in reasons[1]
+
+
+def test_a_gbnf_literal_matches_exactly_its_text():
+    from cook2ltl.reduce.grammar import gbnf_literal
+    from cook2ltl.reduce.llm import line_grammar
+
+    for text in ('say "hi"', "a\\b", "new\nline\r\t", "\x00\x1b[2J\x7f\x9b", "\u202e\u2028", "🍳", 'x" | [^\n]* | "y'):
+        literal = gbnf_literal(text)
+        assert "\n" not in literal and literal.isprintable(), literal
+        assert accepts(f"root ::= {literal}", text)
+        assert not accepts(f"root ::= {literal}", text + "x")
+        grammar = line_grammar([text, "pick_up(pot)"])
+        assert accepts(grammar, f"    {text}\n") and accepts(grammar, "    pick_up(pot)\n")
+        assert not accepts(grammar, "    anything\n")

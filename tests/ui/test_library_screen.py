@@ -169,3 +169,40 @@ async def test_an_entry_without_a_plan_is_shown_and_cannot_be_approved(make_app,
         await settle(pilot)
         assert not isinstance(app.screen, ConfirmDialog)  # nothing to approve, so nothing to confirm
         assert library.get(melt.id).status == Status.PENDING
+
+
+async def test_hostile_text_in_the_library_is_shown_literally(make_app, services):
+    """Markup and control sequences in every field of every entry (an imported or hand-edited library): the
+    table, each entry's detail and history, the editor and a notification show them as text; nothing raises
+    and no control character is drawn."""
+    from cook2ltl.text_safety import visible
+    from tests.reliability.test_fuzz_output import OBEYED
+    from tests.reliability.test_injection import HOSTILE, hostile_library
+
+    hostile_library(services.library_path)
+    app = make_app()
+    async with app.run_test(size=(200, 50)) as pilot:
+        await pilot.press("f3")
+        await settle(pilot)
+        screen = app.screen
+        table = rows(screen, "#entries")
+        assert visible(f"qwen {HOSTILE}") in [row[6] for row in table] and visible(HOSTILE) in [row[4] for row in table]
+        assert visible(f"ann {HOSTILE}") in [row[7] for row in table]
+        assert visible('bad"verb(what)') in [row[3] for row in table]
+        details = ""
+        for index in range(len(table)):
+            screen.query_one("#entries", DataTable).move_cursor(row=index)
+            await settle(pilot)
+            details += text(screen.query_one(EntryDetail))
+            assert not OBEYED.search(app.export_screenshot())
+        for shown in (f"line 1 {HOSTILE}", f"egg {HOSTILE}", f"bob {HOSTILE}", f"because {HOSTILE}", HOSTILE):
+            assert visible(shown) in details, shown
+        assert not OBEYED.search(details)
+        await choose(pilot, "boil")
+        await pilot.press("e")
+        await settle(pilot)
+        assert isinstance(app.screen, EntryEditor) and not OBEYED.search(app.export_screenshot())
+        await pilot.press("escape")
+        app.notify(HOSTILE, title=HOSTILE)
+        await pilot.pause()
+        assert not OBEYED.search(app.export_screenshot())

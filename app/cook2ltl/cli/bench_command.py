@@ -8,7 +8,8 @@ from pathlib import Path
 from typing import Optional
 
 import typer
-from rich.console import Console
+
+from cook2ltl.text_safety import terminal
 
 SMOKE_MODEL = "smollm2-135m"
 
@@ -48,8 +49,8 @@ def bench_command(
     from cook2ltl import paths
     from cook2ltl.reduce.llm import DEFAULT_MODEL
 
-    console = Console(stderr=True)
-    echo = lambda text: console.print(text, highlight=False, markup=False, soft_wrap=True)  # noqa: E731
+    console = terminal(stderr=True)
+    echo = lambda text: console.print(text, highlight=False, soft_wrap=True)  # noqa: E731
     out = paths.output_folder(out, "--out")  # made now: a bad folder fails before the benchmark, not after it
     model = model or (SMOKE_MODEL if smoke else DEFAULT_MODEL)
     chosen = [b for b in Benchmark if b != Benchmark.ALL] if which == Benchmark.ALL else [which]

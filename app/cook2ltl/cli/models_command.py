@@ -14,6 +14,7 @@ from rich.table import Table
 
 from cook2ltl import paths
 from cook2ltl.models.manifest import State, load_manifest, state_of
+from cook2ltl.text_safety import literal, styled, terminal, visible
 
 models_app = typer.Typer(help="List, provision and evaluate the models.", invoke_without_command=True, no_args_is_help=False)
 STATE_STYLE = {State.READY: "green", State.MISSING: "yellow", State.CORRUPT: "bold red"}
@@ -27,11 +28,12 @@ def list_models(context: typer.Context) -> None:
     table = Table("model", "state", "from", "licence")
     for entry in load_manifest().values():
         state = state_of(entry)
-        table.add_row(f"{entry.name}\n[dim]{entry.role}[/dim]", f"[{STATE_STYLE[state]}]{state.value}[/]",
-                      f"{entry.origin()}\n[dim]{entry.upstream}[/dim]", entry.licence)
-    console = Console()
+        table.add_row(styled(entry.name, "\n", (entry.role, "dim")), literal(state.value, STATE_STYLE[state]),
+                      styled(entry.origin(), "\n", (entry.upstream, "dim")), literal(entry.licence))
+    console = terminal()
     console.print(table)
-    console.print(f"[dim]weights: {paths.model_cache_dir()}  ·  `cook2ltl models provision` fetches or trains the rest[/dim]")
+    console.print(literal(f"weights: {paths.model_cache_dir()}  ·  `cook2ltl models provision` fetches or trains "
+                          "the rest", "dim"))
 
 
 @models_app.command("provision")
@@ -47,7 +49,7 @@ def provision_command(
     if unknown:
         raise typer.BadParameter(f"unknown model(s): {', '.join(sorted(unknown))}; known: {', '.join(manifest)}")
     chosen = [entry for name, entry in manifest.items() if not names or name in names]
-    console = Console(stderr=True)
+    console = terminal(stderr=True)
     events = provision(chosen, force=force)
     if console.is_terminal:
         _show_live(events, console)
@@ -56,16 +58,16 @@ def provision_command(
 
 
 def _show_live(events, console: Console) -> None:
-    columns = (TextColumn("{task.fields[model]:<20}"), BarColumn(), MofNCompleteColumn(),
-               TimeElapsedColumn(), TextColumn("{task.description}"))
+    columns = (TextColumn("{task.fields[model]:<20}", markup=False), BarColumn(), MofNCompleteColumn(),
+               TimeElapsedColumn(), TextColumn("{task.description}", markup=False))
     with Progress(*columns, console=console) as progress:
         tasks = {}
         for event in events:
             if event.model not in tasks:
-                tasks[event.model] = progress.add_task(event.message, model=event.model, total=None)
+                tasks[event.model] = progress.add_task(visible(event.message), model=visible(event.model), total=None)
             total = 1 if event.finished else event.total or None
             done = 1 if event.finished else event.done
-            progress.update(tasks[event.model], description=event.message, total=total, completed=done)
+            progress.update(tasks[event.model], description=visible(event.message), total=total, completed=done)
 
 
 def _show_milestones(events, console: Console) -> None:
@@ -77,7 +79,7 @@ def _show_milestones(events, console: Console) -> None:
             shown[event.model] = tenth
             progress = f" {event.done}/{event.total}" if event.total else ""
             console.print(f"[{time.perf_counter() - started:6.0f} s] {event.model}: {event.message}{progress}",
-                          highlight=False, markup=False)
+                          highlight=False)
 
 
 @models_app.command("eval-ner")
@@ -108,4 +110,4 @@ def eval_ner_command(
     for name, score in rows.items():
         table.add_row(name, f"{score.f1:.3f}", f"{score.precision:.3f}", f"{score.recall:.3f}",
                       str(score.gold), str(score.predicted))
-    Console().print(table)
+    terminal().print(table)

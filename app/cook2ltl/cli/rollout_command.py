@@ -4,20 +4,19 @@ recipe file, translated and rolled out in the world model (cli/recipe_rollout.py
 
 from __future__ import annotations
 
-import json
 from enum import StrEnum
 from pathlib import Path
 from typing import Optional
 
 import typer
 from rich.console import Console
-from rich.text import Text
 
 from cook2ltl import paths
 from cook2ltl.cli.recipe_rollout import is_recipe, rollout_recipe
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline import Variant
 from cook2ltl.reduce.llm import DEFAULT_MODEL
+from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 DEFAULT_SCENE = "FloorPlan1"
 VERDICT_STYLE = {"satisfied": "bold green", "presumably_true": "green", "presumably_false": "yellow",
@@ -72,7 +71,7 @@ def rollout_command(
 
     library = paths.user_path(library, "--library") if library else None
     if list_tasks:
-        show_tasks(Console(), as_json)
+        show_tasks(terminal(), as_json)
         return
     if target is None:
         raise UserError("No task, formula or recipe given.",
@@ -89,18 +88,18 @@ def rollout_command(
     if repairs is None:
         repairs = load_settings().translate.repairs
     scene = _scene(scene or (task.scene if task else DEFAULT_SCENE))
-    errors = Console(stderr=True)
-    with errors.status(f"starting the {backend.value} kitchen …"):
+    errors = terminal(stderr=True)
+    with errors.status(literal(f"starting the {backend.value} kitchen …")):
         controller = start_kitchen(scene, backend.value)
     try:
         plan = None
         if formula is None:
-            with errors.status(f"planning “{task.instruction}” with {model} …"), \
+            with errors.status(literal(f"planning “{task.instruction}” with {model} …")), \
                     open_planner(model, library, variant, validate is not False, repairs, ground) as planner:
                 set_up(controller, task)  # planned in the kitchen as the task leaves it (a dirty mug)
                 plan = planner.plan(task.instruction, scene, controller.last_event.metadata["objects"])
             formula = plan.formula
-        console = None if as_json else Console()
+        console = None if as_json else terminal()
         if console is not None:
             show_header(console, task, plan, formula, scene, backend.value)
         trial = None
@@ -112,7 +111,7 @@ def rollout_command(
     finally:
         controller.stop()
     if as_json:
-        typer.echo(json.dumps(trial_json(trial, backend.value), ensure_ascii=False, indent=2))
+        typer.echo(json_text(trial_json(trial, backend.value)))
     else:
         show_outcome(console, trial)
     raise typer.Exit(0 if trial.success else 1)
@@ -150,7 +149,7 @@ def show_tasks(console: Console, as_json: bool) -> None:
 
     tasks = load_tasks()
     if as_json:
-        typer.echo(json.dumps([task_json(t) for t in tasks], ensure_ascii=False, indent=2))
+        typer.echo(json_text([task_json(t) for t in tasks]))
         return
     groups = (("", [t for t in tasks if t.source != PARAPHRASES]),
               ("\nparaphrases (held out: paraphrased and compound instructions)",
@@ -161,24 +160,25 @@ def show_tasks(console: Console, as_json: bool) -> None:
         width = max([34] + [len(t.instruction) for t in group])
         for task in group:
             goal = "; ".join(c.text() for c in task.goal)
-            console.print(f"[bold]{task.id:<20}[/bold] {task.instruction:<{width}} [dim]{task.scene:<12} "
-                          f"{task.category:<7} {goal}[/dim]", highlight=False, soft_wrap=True)
+            console.print(styled((f"{task.id:<20}", "bold"), f" {task.instruction:<{width}} ",
+                                 (f"{task.scene:<12} {task.category:<7} {goal}", "dim")),
+                          highlight=False, soft_wrap=True)
 
 
 def show_header(console: Console, task, plan, formula, scene: str, backend: str) -> None:
     from cook2ltl.ltl.printer import to_unicode
 
     title = f"task {task.id} · “{task.instruction}”" if task else "formula"
-    console.print(f"[bold]{title}[/bold] [dim]· {scene} · {backend} kitchen[/dim]", highlight=False)
+    console.print(styled((title, "bold"), (f" · {scene} · {backend} kitchen", "dim")), highlight=False)
     if task is not None:
-        console.print(Text("goal  ", style="dim") + Text("; ".join(c.text() for c in task.goal)))
+        console.print(literal("goal  ", style="dim") + literal("; ".join(c.text() for c in task.goal)))
     if plan is not None:
         calls = " · ".join(call.text() for call in plan.calls) or "(no admissible plan)"
-        console.print(Text("plan  ", style="dim") + Text(calls) + Text(
+        console.print(literal("plan  ", style="dim") + literal(calls) + literal(
             f"   [{plan.model}, {plan.variant.value}: {', '.join(plan.sources)}; {plan.seconds:.1f} s]", style="dim"))
         for problem in plan.problems:
-            console.print(f"      [bold red]![/bold red] {problem}", highlight=False)
-    console.print(Text("φ     ", style="dim") + Text(to_unicode(formula), style="yellow"), soft_wrap=True)
+            console.print(styled("      ", ("!", "bold red"), " ", problem), highlight=False)
+    console.print(literal("φ     ", style="dim") + literal(to_unicode(formula), style="yellow"), soft_wrap=True)
 
 
 def show_event(console: Console, event, atoms: int) -> None:
@@ -188,19 +188,18 @@ def show_event(console: Console, event, atoms: int) -> None:
 
     if isinstance(event, Started) and event.unobservable:
         never = ", ".join(a.text for a in event.unobservable)
-        console.print(f"[yellow]the kitchen cannot report {never}: it never holds[/yellow]", highlight=False)
+        console.print(literal(f"the kitchen cannot report {never}: it never holds", "yellow"), highlight=False)
     elif isinstance(event, ActionRefused):
-        console.print(Text("    ✗ ", style="bold red") + Text(event.attempt.error))
+        console.print(literal("    ✗ ", style="bold red") + literal(event.attempt.error))
     elif isinstance(event, Stepped):
         step = event.step
-        line = Text(f"{step.index:>3} ", style="dim") + Text("✓ ", style="green") + Text(step.attempt.atom.text,
-                                                                                        style="bold")
-        line += Text(f"   {len(step.met)}/{atoms} atoms met", style="dim")
+        line = styled((f"{step.index:>3} ", "dim"), ("✓ ", "green"), (step.attempt.atom.text, "bold"))
+        line += literal(f"   {len(step.met)}/{atoms} atoms met", style="dim")
         if step.facts:
-            line += Text("   now " + ", ".join(sorted(a.text for a in step.facts)), style="cyan")
+            line += literal("   now " + ", ".join(sorted(a.text for a in step.facts)), style="cyan")
         console.print(line)
-        remaining = Text("      remaining ", style="dim") + Text(to_unicode(step.remaining))
-        remaining += Text(f"   {step.verdict.value.replace('_', ' ')}", style=VERDICT_STYLE[step.verdict.value])
+        remaining = literal("      remaining ", style="dim") + literal(to_unicode(step.remaining))
+        remaining += literal(f"   {step.verdict.value.replace('_', ' ')}", style=VERDICT_STYLE[step.verdict.value])
         console.print(remaining, soft_wrap=True)
 
 
@@ -209,13 +208,13 @@ def show_outcome(console: Console, trial) -> None:
 
     result = trial.rollout
     verdict = result.verdict.value
-    console.print(Text("verdict ", style="dim") + Text(verdict.replace("_", " "), style=VERDICT_STYLE[verdict])
-                  + Text(f" — {explain(result)}", style="dim"))
+    console.print(literal("verdict ", style="dim") + literal(verdict.replace("_", " "), style=VERDICT_STYLE[verdict])
+                  + literal(f" — {explain(result)}", style="dim"))
     if trial.goal is not None:
         for condition, met in trial.goal.conditions:
-            mark = Text("✓ ", style="green") if met else Text("✗ ", style="bold red")
-            console.print(Text("goal    ", style="dim") + mark + Text(condition.text()))
+            mark = literal("✓ ", style="green") if met else literal("✗ ", style="bold red")
+            console.print(literal("goal    ", style="dim") + mark + literal(condition.text()))
     planning = f" · {trial.plan.seconds:.1f} s planning" if trial.plan else ""
-    outcome = Text("success", style="bold green") if trial.success else Text("failure", style="bold red")
-    console.print(outcome + Text(f" · {len(result.steps)} actions · {result.seconds:.2f} s in the kitchen{planning}",
-                                 style="dim"))
+    outcome = literal("success", style="bold green") if trial.success else literal("failure", style="bold red")
+    console.print(outcome + literal(f" · {len(result.steps)} actions · {result.seconds:.2f} s in the kitchen"
+                                    f"{planning}", style="dim"))

@@ -2,13 +2,11 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Optional
 
 import typer
 from rich.console import Console
-from rich.text import Text
 
 from cook2ltl import paths
 from cook2ltl.cli.inputs import read_recipe
@@ -16,6 +14,7 @@ from cook2ltl.pipeline import Translation, Variant
 from cook2ltl.translate.rates import rates
 from cook2ltl.reduce.llm import DEFAULT_MODEL
 from cook2ltl.reduce.model import Source
+from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 SOURCE_STYLE = {Source.PRIMITIVE: "green", Source.LIBRARY: "cyan", Source.LLM: "magenta", Source.WORLD: "dim"}
 
@@ -56,17 +55,16 @@ def translate_command(
     library = paths.user_path(library, "--library") if library else None
     pddl = paths.output_folder(pddl, "--pddl") if pddl else None  # made now: a bad folder fails before the run
     text = read_recipe(recipe)
-    errors = Console(stderr=True)
+    errors = terminal(stderr=True)
     with open_translator(load_primitives(primitives), model, library, variant, ReductionSettings(max_lines, comments),
                          validate, repairs, approved_only, ground, errors) as translator:
         translation = translated(text, translator, errors)
     if pddl is not None:
         _export(translation, translator.grounding, pddl, errors)
     if as_json:
-        typer.echo(json.dumps(with_validation(translation_json(translation), translation), ensure_ascii=False,
-                              indent=2))
+        typer.echo(json_text(with_validation(translation_json(translation), translation)))
     else:
-        show(translation, Console())
+        show(translation, terminal())
 
 
 def _export(translation: Translation, grounding, folder: Path, errors: Console) -> None:
@@ -100,6 +98,7 @@ def with_validation(data: dict, translation: Translation) -> dict:
         if result.entry_validation is not None:
             action["library_validation"] = {"status": result.entry_validation, "problems": list(result.entry_problems)}
     counts = rates(translation)
+    data["skipped_verbs"] = list(translation.skipped_verbs)
     data["stats"] |= {"executability": counts.executability, "validated_rate": counts.validated_rate,
                       "written_lines": counts.written_lines, "admissible_lines": counts.admissible_lines}
     return data
@@ -108,25 +107,26 @@ def with_validation(data: dict, translation: Translation) -> dict:
 def show(translation: Translation, console: Console) -> None:
     from cook2ltl.ltl.printer import to_spot, to_unicode
 
-    console.print(f"[dim]primitives {translation.primitives} · variant {translation.variant.value} · "
-                  f"model {translation.model}[/dim]")
+    console.print(literal(f"primitives {translation.primitives} · variant {translation.variant.value} · "
+                          f"model {translation.model}", "dim"))
+    for reason in translation.skipped_verbs:
+        console.print(literal(f"! {reason}", "yellow"), highlight=False)
     for step in translation.steps:
-        console.print(Text(f"{step.step.index + 1:>3}. ", style="dim") + Text(step.step.sentence.text))
+        console.print(styled((f"{step.step.index + 1:>3}. ", "dim"), step.step.sentence.text))
         for index, frame in enumerate(step.step.frames):
-            console.print(Text("      " + frame.signature(), style="dim"))
+            console.print(literal("      " + frame.signature(), "dim"))
             for result in (r for r in step.actions if r.frame_index == index):
                 _show_reduction(result, console)
-        console.print(Text("      φ = ", style="dim") + Text(to_unicode(step.formula), style="yellow"), soft_wrap=True)
-        console.print(Text("          " + to_spot(step.formula), style="dim"), soft_wrap=True)
+        console.print(styled(("      φ = ", "dim"), (to_unicode(step.formula), "yellow")), soft_wrap=True)
+        console.print(literal("          " + to_spot(step.formula), "dim"), soft_wrap=True)
         for problem in step.problems:
-            console.print(f"      [bold red]![/bold red] {problem}", highlight=False)
+            console.print(styled("      ", ("!", "bold red"), " ", problem), highlight=False)
     stats = translation.stats
-    console.print(
-        f"[dim]{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} from the library, "
+    console.print(literal(
+        f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} from the library, "
         f"{stats.llm_calls} LLM calls ({stats.prompt_tokens} prompt + {stats.completion_tokens} completion tokens, "
-        f"{stats.llm_seconds:.1f} s); {stats.new_entries} new library entries; {stats.seconds:.1f} s in all[/dim]"
-    )
-    console.print(f"[dim]{rates_line(translation)}[/dim]", highlight=False, soft_wrap=True)
+        f"{stats.llm_seconds:.1f} s); {stats.new_entries} new library entries; {stats.seconds:.1f} s in all", "dim"))
+    console.print(literal(rates_line(translation), "dim"), highlight=False, soft_wrap=True)
 
 
 def rates_line(translation: Translation) -> str:
@@ -142,25 +142,24 @@ def rates_line(translation: Translation) -> str:
 
 def _show_reduction(result, console: Console) -> None:
     reduction = result.reduction
-    line = Text("        → ")
-    line.append(reduction.action.text(), style="bold")
     entry = f" #{reduction.entry_id}" if reduction.entry_id is not None else ""
-    line.append(f"  {reduction.source.value}{entry}", style=SOURCE_STYLE[reduction.source])
-    console.print(line)
+    console.print(styled("        → ", (reduction.action.text(), "bold"),
+                         (f"  {reduction.source.value}{entry}", SOURCE_STYLE[reduction.source])))
     if reduction.source != Source.PRIMITIVE:
         for call in reduction.body:
-            console.print(f"            {call.text()}", highlight=False)
+            console.print(literal(f"            {call.text()}"), highlight=False)
     for dropped in reduction.dropped:
-        console.print(f"            [red]✗ {dropped}[/red] [dim](not admissible, dropped)[/dim]", highlight=False)
+        console.print(styled("            ", (f"✗ {dropped}", "red"), " ", ("(not admissible, dropped)", "dim")),
+                      highlight=False)
     check = result.validation
     if check is not None:
         repaired = f", after {len(result.attempts)} repair{'s' if len(result.attempts) > 1 else ''}" if result.attempts else ""
         style = "green" if check.passed else "yellow" if not check.checked else "red"
-        console.print(f"            [{style}]kitchen check: {check.status}[/{style}] [dim]({check.scene or 'no scene'}"
-                      f"{repaired})[/dim]", highlight=False)
+        console.print(styled("            ", (f"kitchen check: {check.status}", style), " ",
+                             (f"({check.scene or 'no scene'}{repaired})", "dim")), highlight=False)
         for message in check.messages():
-            console.print(f"            [{style}]! {message}[/{style}]", highlight=False)
+            console.print(literal(f"            ! {message}", style), highlight=False)
     if result.entry_validation == "failed":
-        console.print("            [red]kitchen check when learnt: failed[/red]", highlight=False)
+        console.print(literal("            kitchen check when learnt: failed", "red"), highlight=False)
         for message in result.entry_problems:
-            console.print(f"            [red]! {message}[/red]", highlight=False)
+            console.print(literal(f"            ! {message}", "red"), highlight=False)
