@@ -17,6 +17,7 @@ from textual.widgets import (
 from cook2ltl.errors import UserError
 from cook2ltl.preprocess.clean import visible_text
 from cook2ltl.ui.feeds import TranslateRequest, translation_feed
+from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone
 from cook2ltl.ui.screens.base import WorkScreen
 from cook2ltl.ui.screens.dialogs import PathDialog
@@ -50,7 +51,7 @@ class TranslateScreen(WorkScreen):
     def compose(self) -> ComposeResult:
         yield Header()
         with Horizontal(id="translate-options", classes="options"):
-            lab_sets = tuple((path.name, str(path)) for path in self.app.translate_settings.primitives)
+            lab_sets = tuple((shown(path.name), str(path)) for path in self.app.translate_settings.primitives)
             yield Select(PRIMITIVE_SETS + lab_sets, value="recipe", allow_blank=False, id="primitives",
                          tooltip="The robot's primitive actions: the paper's recipe set, AI2-THOR's (rollouts), "
                                  "or a set the settings' [translate] primitives name.")
@@ -59,7 +60,8 @@ class TranslateScreen(WorkScreen):
                                  "reuses only entries a reviewer approved); AR passes primitives through; AR* asks "
                                  "the model for every action.")
             models = self.app.services.model_names
-            yield Select([(name, name) for name in models], value=self.app.model_name, allow_blank=False, id="model")
+            yield Select([(shown(name), name) for name in models], value=self.app.model_name, allow_blank=False,
+                         id="model")
             repairs = self.app.translate_settings.repairs
             yield Checkbox("kitchen check", True, id="validate",
                            tooltip="Run each new reduction in the THOR kitchen before caching it; a failing plan "
