@@ -8,7 +8,7 @@ from pathlib import Path
 
 from platformdirs import user_cache_dir, user_config_dir, user_data_dir
 
-from cook2ltl.errors import UserError, require_utf8
+from cook2ltl.errors import UserError
 
 APP = "cook2ltl"
 # The package lives in app/cook2ltl/, so the project root is two levels up.
@@ -25,7 +25,10 @@ def user_path(value: str | os.PathLike, what: str) -> Path:
     hint = "give the path of a file or folder, e.g. ~/robot/primitives.toml."
     if isinstance(text, bytes) or "\x00" in text:
         raise UserError(f"{what} {shown(text)} is not a path (it holds a NUL byte or raw bytes).", hint)
-    require_utf8(text, what, hint)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:  # bytes that are not UTF-8, from argv or the environment (or a lone surrogate)
+        raise UserError(f"{what} {shown(text)} is not UTF-8 text.", hint) from None
     if not text.strip():
         raise UserError(f"{what} is empty.", hint)
     try:

@@ -27,7 +27,7 @@ def is_recipe(target: str) -> bool:
         return True
     try:
         return files.is_regular_file(Path(target).expanduser())
-    except RuntimeError:  # ~name of no such user: no file, so a task or a formula
+    except (RuntimeError, ValueError):  # ~name of no such user, or a NUL: no file, so a task or a formula
         return False
 
 
