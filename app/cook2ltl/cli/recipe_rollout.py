@@ -3,7 +3,6 @@ one state, with each plan line applied or refused, who wrote it, what changed, a
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import NoReturn
 
@@ -13,6 +12,7 @@ from rich.text import Text
 
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline import Variant
+from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 VERDICT_STYLE = {"satisfied": "bold green", "presumably_true": "green", "presumably_false": "yellow",
                  "violated": "bold red"}
@@ -50,11 +50,11 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
     chosen = load_primitives(primitives)
     if chosen.world is None:
         raise UserError(f"The {chosen.name} primitive set names no world model.", NO_WORLD_HINT)
-    errors = Console(stderr=True)
+    errors = terminal(stderr=True)
     with open_translator(chosen, model, library, variant, ReductionSettings(), validate, repairs, False, True,
                          errors) as translator:
         translation = translated(text, translator, errors)
-    console = None if as_json else Console()
+    console = None if as_json else terminal()
     rollout = None
     for event in roll_out_recipe(translation, chosen, translator.grounding.world):
         if isinstance(event, Finished):
@@ -68,7 +68,7 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
         elif isinstance(event, StepRolled):
             show_step_end(console, event.run)
     if as_json:
-        typer.echo(json.dumps(recipe_rollout_json(rollout), ensure_ascii=False, indent=2))
+        typer.echo(json_text(recipe_rollout_json(rollout)))
     else:
         show_outcome(console, rollout)
     raise typer.Exit(0 if rollout.success else 1)
@@ -78,12 +78,12 @@ def show_began(console: Console, began, recipe: str, translation) -> None:
     from cook2ltl.ltl.printer import to_unicode
 
     name = "standard input" if recipe == "-" else Path(recipe).name
-    console.print(f"[bold]{name}[/bold] [dim]· {translation.primitives} primitives · {began.steps} steps, "
-                  f"{began.actions} actions · the world model[/dim]", highlight=False)
-    console.print(Text("φ  ", style="dim") + Text(to_unicode(began.formula), style="yellow"), soft_wrap=True)
+    console.print(styled((name, "bold"), (f" · {translation.primitives} primitives · {began.steps} steps, "
+                                          f"{began.actions} actions · the world model", "dim")), highlight=False)
+    console.print(literal("φ  ", style="dim") + literal(to_unicode(began.formula), style="yellow"), soft_wrap=True)
     if began.unobservable:
         never = ", ".join(atom.text for atom in began.unobservable)
-        console.print(f"[yellow]the world cannot tell {never}: true only once waited for[/yellow]", highlight=False)
+        console.print(literal(f"the world cannot tell {never}: true only once waited for", "yellow"), highlight=False)
 
 
 def show_action(console: Console, rolled) -> None:
@@ -94,29 +94,29 @@ def show_action(console: Console, rolled) -> None:
     run, step = rolled.run, rolled.step
     if run.result is step.actions[0]:
         _step_title(console, step)
-    head = Text("     → ") + Text(run.result.reduction.action.text(), style="bold")
+    head = literal("     → ") + literal(run.result.reduction.action.text(), style="bold")
     if run.avoided:
-        console.print(head + Text("   avoided: the recipe says not to (not run)", style="dim"))
+        console.print(head + literal("   avoided: the recipe says not to (not run)", style="dim"))
         return
     check = run.result.check
     if check is not None and check.effect:
-        mark = Text(" ✓", style="green") if not run.missing else Text(" ✗", style="bold red")
-        head += Text("   effect ", style="dim") + Text(", ".join(fact_text(f) for f in check.effect)) + mark
+        mark = literal(" ✓", style="green") if not run.missing else literal(" ✗", style="bold red")
+        head += literal("   effect ", style="dim") + literal(", ".join(fact_text(f) for f in check.effect)) + mark
     console.print(head)
     if not run.lines:
-        console.print(Text("         (no plan)", style="bold red"))
+        console.print(literal("         (no plan)", style="bold red"))
     for line in run.lines:
-        mark = Text("✓ ", style="green") if line.applied else Text("✗ ", style="bold red")
-        row = Text("       ") + mark + Text(f"{line.call.text():<28}") + Text(
+        mark = literal("✓ ", style="green") if line.applied else literal("✗ ", style="bold red")
+        row = literal("       ") + mark + literal(f"{line.call.text():<28}") + literal(
             f" {line.written_by:<8}", style=WRITER_STYLE.get(line.written_by, "dim"))
         if not line.applied:
-            row += Text(f" {line.problem}", style="red")
+            row += literal(f" {line.problem}", style="red")
         else:
             changes = [f"+{fact_text(f)}" for f in line.added] + [f"−{fact_text(f)}" for f in line.removed]
-            row += Text(" " + " ".join(changes), style="cyan")
+            row += literal(" " + " ".join(changes), style="cyan")
         console.print(row, overflow="ellipsis", no_wrap=True)
     if run.lines:
-        console.print(Text("         ") + _progress(run.lines[-1].verdict, run.lines[-1].remaining),
+        console.print(literal("         ") + _progress(run.lines[-1].verdict, run.lines[-1].remaining),
                       overflow="ellipsis", no_wrap=True)
 
 
@@ -124,7 +124,7 @@ def show_step_end(console: Console, step) -> None:
     if not step.actions:  # a step without actions had no title yet
         _step_title(console, step.result)
     for problem in step.problems:
-        console.print(f"     [bold red]![/bold red] {problem}", highlight=False)
+        console.print(styled("     ", ("!", "bold red"), " ", problem), highlight=False)
 
 
 def _progress(verdict, remaining) -> Text:
@@ -132,24 +132,24 @@ def _progress(verdict, remaining) -> Text:
     from cook2ltl.ltl.printer import to_unicode
 
     value = verdict.value
-    return (Text(f"{value.replace('_', ' '):<17}", style=VERDICT_STYLE[value]) + Text("remaining ", style="dim")
-            + Text(to_unicode(remaining)))
+    return (literal(f"{value.replace('_', ' '):<17}", style=VERDICT_STYLE[value]) + literal("remaining ", style="dim")
+            + literal(to_unicode(remaining)))
 
 
 def _step_title(console: Console, step) -> None:
-    console.print(Text(f"{step.step.index + 1:>3}. ", style="dim") + Text(step.step.sentence.text, style="bold"))
+    console.print(literal(f"{step.step.index + 1:>3}. ", style="dim") + literal(step.step.sentence.text, style="bold"))
 
 
 def show_outcome(console: Console, rollout) -> None:
     failing = [step for step in rollout.steps if step.problems]
     if failing:
-        console.print("[bold]problems by step[/bold]")
+        console.print(literal("problems by step", "bold"))
         for step in failing:
             _step_title(console, step.result)
             for problem in step.problems:
-                console.print(f"       [bold red]![/bold red] {problem}", highlight=False)
-    console.print(Text("verdict ", style="dim") + _progress(rollout.verdict, rollout.remaining),
+                console.print(styled("       ", ("!", "bold red"), " ", problem), highlight=False)
+    console.print(literal("verdict ", style="dim") + _progress(rollout.verdict, rollout.remaining),
                   overflow="ellipsis", no_wrap=True)
     reached = sum(1 for step in rollout.steps if step.reached)
-    outcome = Text("success", style="bold green") if rollout.success else Text("failure", style="bold red")
-    console.print(outcome + Text(f" · {reached} of {len(rollout.steps)} steps reached their effects", style="dim"))
+    outcome = literal("success", style="bold green") if rollout.success else literal("failure", style="bold red")
+    console.print(outcome + literal(f" · {reached} of {len(rollout.steps)} steps reached their effects", style="dim"))
