@@ -112,8 +112,8 @@ class LlamaModel:
         try:
             generated = list(greedy_tokens(llama, grammar, tokens, min(max_tokens, room), keep_going))
         except GrammarRejected as error:
-            raise UserError("llama.cpp rejected the generated grammar.",
-                            "check the names in the primitive set file; they must be plain identifiers.") from error
+            hint = "every word in it is escaped, so this is a bug in cook2ltl: please report it with the recipe."
+            raise UserError("llama.cpp rejected the generated grammar.", hint) from error
         self._check(deadline)
         return Completion(self._text(generated),
                           Usage(len(tokens), len(generated), time.perf_counter() - started))
