@@ -205,12 +205,14 @@ def check_formula(formula: Formula, objects, scene: str, bound: frozenset[str] =
 def in_order(formula: Formula) -> list[Atom]:
     """The formula's atoms in the order they are written (canonical order for ∧ and ∨), each once."""
     seen: dict[Atom, None] = {}
+    expanded: set[Formula] = set()  # a shared subformula's atoms are all seen at its first visit
     stack = [formula]
     while stack:  # a loop: long recipes nest deeper than Python's recursion limit
         node = stack.pop()
         if isinstance(node, Atom):
             seen.setdefault(node)
-        else:
+        elif node not in expanded:
+            expanded.add(node)
             stack.extend(reversed(node.children))
     return list(seen)
 

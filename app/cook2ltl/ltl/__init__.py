@@ -27,14 +27,15 @@ from cook2ltl.ltl.ast import (
     WeakUntil,
     holds_at_end,
 )
+from cook2ltl.ltl.limits import FormulaTooLarge
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.ltl.progress import StepResult, Verdict, holds, monitor, progress, verdict
 from cook2ltl.ltl.simplify import simplify
 
 __all__ = [
-    "clear_caches", "FALSE", "TRUE", "Always", "And", "Atom", "Equiv", "Eventually", "Formula", "Implies",
-    "LTLSyntaxError", "Next", "Not", "Or", "Release", "StepResult", "StrongRelease", "Until",
+    "clear_caches", "FALSE", "TRUE", "Always", "And", "Atom", "Equiv", "Eventually", "Formula", "FormulaTooLarge",
+    "Implies", "LTLSyntaxError", "Next", "Not", "Or", "Release", "StepResult", "StrongRelease", "Until",
     "Verdict", "WeakNext", "WeakUntil", "holds", "holds_at_end", "monitor", "parse", "progress",
     "simplify", "to_spot", "to_unicode", "verdict",
 ]  # fmt: skip
@@ -46,8 +47,8 @@ def clear_caches() -> None:
     They keep the formulas they saw alive; a long session may drop them, and
     a benchmark must, to time a cold start.
     """
+    _progress.clear_memo()
     for cached in (
-        _progress._progress,
         _simplify.implies,
         _simplify.simplify,
         _automaton.normal_form,

@@ -19,9 +19,13 @@ strong release, ``W`` the weak until.
 from __future__ import annotations
 
 import weakref
+from bisect import insort
 from collections.abc import Iterator
 from dataclasses import dataclass, fields
+from functools import cmp_to_key
 from typing import ClassVar
+
+from cook2ltl.ltl.limits import MAX_PRINTED_NODES, charge
 
 _INTERNED: weakref.WeakValueDictionary = weakref.WeakValueDictionary()
 _FORBIDDEN_IN_NAMES = frozenset('()",')
@@ -32,11 +36,15 @@ class Formula:
 
     rank: ClassVar[int]
     # Set once by ``_intern``, from the children's (so never by recursion):
-    key: tuple  # structural sort key of the canonical form
     atoms: frozenset  # the atoms in the formula
     size: int  # number of nodes
     end_ok: bool  # see holds_at_end()
     promised: frozenset | None  # atoms every model makes true at some step; None: no model
+
+    @property
+    def key(self):
+        """Sort key of the canonical order (see :func:`compare`)."""
+        return _SORT_KEY(self)
 
     def __str__(self) -> str:
         from cook2ltl.ltl.printer import to_unicode
@@ -46,6 +54,8 @@ class Formula:
     def __repr__(self) -> str:
         from cook2ltl.ltl.printer import to_spot
 
+        if self.size > MAX_PRINTED_NODES:  # a repr never raises
+            return f"<{type(self).__name__} of {self.size:,} nodes>"
         return f"<{type(self).__name__} {to_spot(self)}>"
 
     def __reduce__(self):
@@ -64,7 +74,7 @@ def _rebuild(cls, args):
     return cls(*args)
 
 
-def _intern(cls, values: tuple, key_tail: tuple, children: tuple) -> Formula:
+def _intern(cls, values: tuple, children: tuple) -> Formula:
     lookup = (cls, values)
     node = _INTERNED.get(lookup)
     if node is not None:
@@ -72,8 +82,10 @@ def _intern(cls, values: tuple, key_tail: tuple, children: tuple) -> Formula:
     node = object.__new__(cls)
     for field, value in zip(fields(cls), values, strict=True):
         object.__setattr__(node, field.name, value)
-    object.__setattr__(node, "key", (cls.rank, *key_tail))
     atoms = frozenset().union(*(c.atoms for c in children)) if children else frozenset()
+    # Gathering the children's atoms (and promises, below) is the cost of a new
+    # node that grows with the formula: about a unit of work per 32 atoms.
+    charge(1 + sum(len(c.atoms) for c in children) // 32)
     object.__setattr__(node, "atoms", atoms)
     object.__setattr__(node, "size", 1 + sum(c.size for c in children))
     end_ok, promised = _facts(node)
@@ -122,7 +134,7 @@ class Constant(Formula):
     rank: ClassVar[int] = 0
 
     def __new__(cls, value: bool):
-        return _intern(cls, (bool(value),), (bool(value),), ())
+        return _intern(cls, (bool(value),), ())
 
     def constructor_args(self) -> tuple:
         return (self.value,)
@@ -147,7 +159,7 @@ class Atom(Formula):
                 raise ValueError(f"bad atom part {part!r}: empty or padded with spaces")
             if _FORBIDDEN_IN_NAMES & set(part):
                 raise ValueError(f'bad atom part {part!r}: contains one of ( ) " ,')
-        node = _intern(cls, (name, args), (name, args), ())
+        node = _intern(cls, (name, args), ())
         if not node.atoms:
             object.__setattr__(node, "atoms", frozenset((node,)))
         return node
@@ -166,7 +178,7 @@ class _Unary(Formula):
     arg: Formula
 
     def __new__(cls, arg: Formula):
-        return _intern(cls, (arg,), (arg.key,), (arg,))
+        return _intern(cls, (arg,), (arg,))
 
     def constructor_args(self) -> tuple:
         return (self.arg,)
@@ -178,7 +190,7 @@ class _Binary(Formula):
     right: Formula
 
     def __new__(cls, left: Formula, right: Formula):
-        return _intern(cls, (left, right), (left.key, right.key), (left, right))
+        return _intern(cls, (left, right), (left, right))
 
     def constructor_args(self) -> tuple:
         return (self.left, self.right)
@@ -240,20 +252,33 @@ class _NAry(Formula):
     zero: ClassVar[Constant]
 
     def __new__(cls, *operands: Formula):
-        flat: set[Formula] = set()
+        runs: list[tuple[Formula, ...]] = []  # the sorted operands of nested nodes of this class
+        loose: set[Formula] = set()
         for op in operands:
             if op is cls.zero:
                 return cls.zero
             if isinstance(op, cls):
-                flat.update(op.args)
+                runs.append(op.args)
             elif op is not cls.unit:
-                flat.add(op)
-        if not flat:
+                loose.add(op)
+        # Adding a few operands to a long sorted run (as `a & b & c …` is read)
+        # inserts them, instead of sorting the whole run again.
+        base: tuple[Formula, ...] = ()
+        rest = loose
+        if runs:
+            base = max(runs, key=len)
+            rest = loose.union(*(r for r in runs if r is not base)).difference(base)
+        if len(rest) > len(base):
+            ordered = sorted(rest.union(base), key=_SORT_KEY)
+        else:
+            ordered = list(base)
+            for f in rest:
+                insort(ordered, f, key=_SORT_KEY)
+        if not ordered:
             return cls.unit
-        if len(flat) == 1:
-            return flat.pop()
-        ordered = tuple(sorted(flat, key=lambda f: f.key))
-        return _intern(cls, (ordered,), (tuple(f.key for f in ordered),), ordered)
+        if len(ordered) == 1:
+            return ordered[0]
+        return _intern(cls, (tuple(ordered),), tuple(ordered))
 
     def constructor_args(self) -> tuple:
         return self.args
@@ -279,6 +304,60 @@ class Equiv(_Binary):
     rank = 14
 
 
+def compare(x: Formula, y: Formula) -> int:
+    """-1, 0 or 1 as ``x`` sorts before, with or after ``y`` in the canonical order.
+
+    The order is lexicographic on (rank, operands…): constants, then atoms by
+    name and arguments, then the operators by rank, each by its operands in
+    turn (a ∧ or ∨ whose operands start another's comes first).
+    """
+    walked: list[tuple[Formula, Formula]] = []
+    answer = _first_difference(x, y, walked)
+    if len(_COMPARED) + len(walked) > _COMPARED_ENTRIES:
+        _COMPARED.clear()
+    for pair in walked:
+        _COMPARED[pair] = answer
+    return answer
+
+
+# The answers for pairs of operators compare() walked through, so formulas
+# built level by level (as progression builds them) compare in one step.
+_COMPARED: dict[tuple[Formula, Formula], int] = {}
+_COMPARED_ENTRIES = 1 << 16
+
+
+def _first_difference(x: Formula, y: Formula, walked: list[tuple[Formula, Formula]]) -> int:
+    """compare() with a loop. Equal subformulas are one object, so it goes down
+    a single path to the first pair that differ, and that pair's answer is the
+    answer of every pair it walked through (``walked``)."""
+    pairs: list = [(x, y)]
+    while pairs:
+        a, b = pairs.pop()
+        if isinstance(a, int):  # operand counts of two ∧ (or ∨) whose shared operands are equal
+            if a != b:
+                return -1 if a < b else 1
+            continue
+        if a is b:
+            continue
+        if a.rank != b.rank:
+            return -1 if a.rank < b.rank else 1
+        mine, theirs = a.constructor_args(), b.constructor_args()
+        if isinstance(a, (Constant, Atom)):
+            return -1 if mine < theirs else 1
+        known = _COMPARED.get((a, b))
+        if known is not None:
+            return known
+        walked.append((a, b))
+        charge()
+        if isinstance(a, _NAry):
+            pairs.append((len(mine), len(theirs)))
+        pairs.extend(reversed(list(zip(mine, theirs))))
+    return 0
+
+
+_SORT_KEY = cmp_to_key(compare)
+
+
 def negate(f: Formula) -> Formula:
     """``¬f`` with the negation pushed one level down (negation normal form, lazily).
 
@@ -297,7 +376,7 @@ def negate(f: Formula) -> Formula:
         case Implies(left=a, right=b):
             return And(a, Not(b))
         case Equiv(left=a, right=b):
-            return Or(And(a, Not(b)), And(Not(a), b))
+            return Equiv(a, Not(b))  # not the expansion, which doubles the formula at each nested ↔
         case Next(arg=a):
             return WeakNext(Not(a))
         case WeakNext(arg=a):

@@ -19,14 +19,20 @@ from functools import lru_cache
 from itertools import chain, combinations
 
 from cook2ltl.ltl.ast import FALSE, TRUE, And, Atom, Formula, Not, Or, holds_at_end
+from cook2ltl.ltl.limits import FormulaTooLarge
 from cook2ltl.ltl.progress import progress
 from cook2ltl.ltl.simplify import and_, or_, simplify
 
 Symbol = frozenset[Atom]
 
 
-class AutomatonTooLarge(RuntimeError):
-    """The DFA would exceed the state budget."""
+# Clauses one normal form may have: a conjunction of n two-way disjunctions
+# has 2ⁿ of them, and dropping subsumed clauses compares every pair.
+MAX_CLAUSES = 1024
+
+
+class AutomatonTooLarge(FormulaTooLarge):
+    """The DFA would exceed the state budget, or a state its clause budget."""
 
 
 @dataclass(frozen=True)
@@ -84,20 +90,47 @@ def action_alphabet(atoms: Collection[Atom], predicates: Collection[str] = ()) -
     return tuple(s if a is None else s | {a} for a in [None, *actions] for s in states)
 
 
-def _dnf(f: Formula) -> frozenset[frozenset[Formula]]:
-    """Clauses (sets of conjuncts) whose disjunction is ``f``; no And/Or inside."""
+def _dnf(root: Formula) -> frozenset[frozenset[Formula]]:
+    """Clauses (sets of conjuncts) whose disjunction is ``root``; no And/Or inside.
+
+    Bottom up over the ∧ and ∨ nodes, with a loop rather than recursion.
+    """
+    done: dict[Formula, frozenset[frozenset[Formula]]] = {}
+    stack = [root]
+    while stack:
+        f = stack.pop()
+        if f in done:
+            continue
+        pending = [a for a in f.args if a not in done] if isinstance(f, (And, Or)) else []
+        if pending:
+            stack += [f, *pending]
+            continue
+        done[f] = _clauses(f, done)
+    return done[root]
+
+
+def _clauses(f: Formula, done: dict[Formula, frozenset[frozenset[Formula]]]) -> frozenset[frozenset[Formula]]:
+    """The clauses of ``f``, those of its operands already in ``done``."""
     if f is TRUE:
         return frozenset({frozenset()})
     if f is FALSE:
         return frozenset()
     if isinstance(f, Or):
-        return frozenset().union(*(_dnf(a) for a in f.args))
-    if isinstance(f, And):
-        clauses = {frozenset()}
+        clauses = frozenset().union(*(done[a] for a in f.args))
+    elif isinstance(f, And):
+        clauses = frozenset({frozenset()})
         for a in f.args:
-            clauses = {c | d for c in clauses for d in _dnf(a)}
-        return frozenset(clauses)
-    return frozenset({frozenset({f})})
+            _check_clauses(len(clauses) * len(done[a]))
+            clauses = frozenset(c | d for c in clauses for d in done[a])
+    else:
+        return frozenset({frozenset({f})})
+    _check_clauses(len(clauses))
+    return clauses
+
+
+def _check_clauses(count: int) -> None:
+    if count > MAX_CLAUSES:
+        raise AutomatonTooLarge(f"a state of the automaton would have more than {MAX_CLAUSES:,} clauses.")
 
 
 @lru_cache(maxsize=1 << 16)
@@ -127,7 +160,7 @@ def build_dfa(
             target = normal_form(progress(current, letter))
             if target not in index:
                 if len(states) >= max_states:
-                    raise AutomatonTooLarge(f"more than {max_states} states")
+                    raise AutomatonTooLarge(f"the automaton would have more than {max_states:,} states.")
                 index[target] = len(states)
                 states.append(target)
             row.append(index[target])

@@ -32,6 +32,7 @@ from cook2ltl.ltl.ast import (
     WeakNext,
     WeakUntil,
 )
+from cook2ltl.ltl.limits import MAX_FORMULA_CHARS, FormulaTooLarge
 
 _UNARY = {
     "X[!]": Next, "○[!]": Next,
@@ -78,10 +79,21 @@ class LTLSyntaxError(ValueError):
         super().__init__(f"line {line}, column {column}: {message}\n{self.pointer()}")
 
     def pointer(self) -> str:
-        """The faulty line with a caret under the fault."""
+        """The faulty line with a caret under the fault; of a long line, the part around it."""
         lines = self.text.splitlines() or [""]
         source = lines[min(self.line, len(lines)) - 1]
-        return f"  {source}\n  {' ' * (self.column - 1)}^"
+        fault = self.column - 1
+        start, end = max(0, fault - _CONTEXT), fault + _CONTEXT
+        before, after = ("…" if start else ""), ("…" if len(source) > end else "")
+        return f"  {before}{source[start:end]}{after}\n  {' ' * (len(before) + fault - start)}^"
+
+
+# Characters of a long line shown either side of a fault, and of a long token.
+_CONTEXT = 40
+
+
+def _clip(text: str) -> str:
+    return text if len(text) <= _CONTEXT else text[: _CONTEXT - 1] + "…"
 
 
 class _Bad(ValueError):
@@ -121,7 +133,7 @@ class _Build(Transformer):
         try:
             return atom_from_text(token[1:-1])
         except ValueError as err:
-            raise _Bad(f"bad quoted atom {token}: {err}", token) from None
+            raise _Bad(f"bad quoted atom {_clip(token)}: {_clip(str(err))}", token) from None
 
     def unary(self, op, arg):
         return _UNARY[str(op)](arg)
@@ -129,11 +141,11 @@ class _Build(Transformer):
     def binary(self, left, op, right):
         return _BINARY[str(op)](left, right)
 
-    def and_(self, left, _op, right):
-        return And(left, right)
+    def and_(self, *operands_and_ops):
+        return And(*operands_and_ops[::2])
 
-    def or_(self, left, _op, right):
-        return Or(left, right)
+    def or_(self, *operands_and_ops):
+        return Or(*operands_and_ops[::2])
 
     def implies(self, left, _op, right):
         return Implies(left, right)
@@ -156,7 +168,10 @@ def _describe(expected: set[str]) -> str:
 
 
 def parse(text: str) -> Formula:
-    """Parse one formula; raise :class:`LTLSyntaxError` if it is not well formed."""
+    """Parse one formula; raise :class:`LTLSyntaxError` if it is not well formed,
+    :class:`~cook2ltl.ltl.limits.FormulaTooLarge` if it is longer than the limit."""
+    if len(text) > MAX_FORMULA_CHARS:
+        raise FormulaTooLarge(f"the formula has {len(text):,} characters, more than the limit of {MAX_FORMULA_CHARS:,}.")
     try:
         return _lark().parse(text)
     except _Bad as err:
@@ -173,7 +188,7 @@ def parse(text: str) -> Formula:
         ) from None
     except UnexpectedInput as err:  # UnexpectedToken
         token = err.token
-        found = "end of input" if token.type == "$END" else repr(str(token))
+        found = "end of input" if token.type == "$END" else repr(_clip(str(token)))
         expected = getattr(err, "accepts", None) or getattr(err, "expected", set())
         at_end = token.type == "$END" or err.line < 1
         line, column = _end_position(text) if at_end else (err.line, err.column)

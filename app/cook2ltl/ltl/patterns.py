@@ -103,17 +103,45 @@ def _finish(guard: Formula) -> Formula:
 
 
 def _chain(elements: tuple[Element, ...], k: Continuation) -> Continuation:
-    for element in reversed(elements):
+    for element in reversed(_spliced(elements)):
         k = _element(element, k)
     return k
 
 
+def _spliced(elements: tuple[Element, ...]) -> list[Element]:
+    """The elements with the parts of each ``then`` in its place, however deep."""
+    flat: list[Element] = []
+    todo = list(reversed(elements))
+    while todo:
+        element = todo.pop()
+        if isinstance(element, Then):
+            todo.extend(reversed(element.parts))
+        else:
+            flat.append(element)
+    return flat
+
+
+@dataclass(frozen=True)
+class _Avoiding:
+    """What must hold once ``avoided`` are added to the guard, then ``k``.
+
+    A run of avoided elements is one of these, not a continuation per element
+    calling the next, so a recipe of many "do not …" steps nests no calls.
+    """
+
+    avoided: tuple[Formula, ...]
+    k: Continuation
+
+    def __call__(self, guard: Formula) -> Formula:
+        return self.k(And(guard, *(Not(f) for f in self.avoided)))
+
+
 def _element(element: Element, k: Continuation) -> Continuation:
     match element:
-        case Then(parts=parts):
-            return _chain(parts, k)
         case Avoid(formula=f):
-            return lambda guard: k(And(guard, Not(f)))
+            if isinstance(k, _Avoiding):
+                return _Avoiding((f, *k.avoided), k.k)
+            return _Avoiding((f,), k)
         case AllOf(parts=parts):
             # Each part followed by the rest: the rest then comes after all parts.
             branches = [_chain((p,), k) for p in parts]

@@ -27,8 +27,8 @@ from cook2ltl.ltl.ast import (
     Until,
     WeakNext,
     WeakUntil,
-    postorder,
 )
+from cook2ltl.ltl.limits import MAX_PRINTED_NODES, FormulaTooLarge
 
 _NAME = re.compile(r"[a-z_][A-Za-z0-9_]*\Z")
 _ARG = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.\-]*\Z")
@@ -93,37 +93,53 @@ def _is_atomic(f: Formula) -> bool:
 
 
 def _print(root: Formula, style: _Style) -> str:
-    text: dict[Formula, str] = {}
-    for f in postorder(root):
-        text[f] = _render(f, style, text)
-    return text[root]
+    """The text of ``root``, written left to right from a stack of pieces
+    still to write (text, or a formula to expand), so depth costs no
+    recursion and each piece is written once."""
+    if root.size > MAX_PRINTED_NODES:
+        raise FormulaTooLarge(
+            f"the formula has {root.size:,} nodes written out, more than the {MAX_PRINTED_NODES:,} that are printed.",
+            "progress it further or print a smaller part; shared parts are written out each time they occur",
+        )
+    out: list[str] = []
+    todo: list[str | Formula] = [root]
+    while todo:
+        piece = todo.pop()
+        if isinstance(piece, str):
+            out.append(piece)
+        else:
+            todo.extend(reversed(_pieces(piece, style)))
+    return "".join(out)
 
 
-def _render(f: Formula, style: _Style, text: dict[Formula, str]) -> str:
-    """One node, its children's text already in ``text``."""
+def _pieces(f: Formula, style: _Style) -> list[str | Formula]:
+    """One node as text around its operands."""
     match f:
         case Constant(value=v):
-            return style.true if v else style.false
+            return [style.true if v else style.false]
         case Atom():
-            return atom_to_text(f, quote_args=style.quote_all_args)
+            return [atom_to_text(f, quote_args=style.quote_all_args)]
         case Not() | Next() | WeakNext() | Eventually() | Always():
             # Prefix operators bind tightest: only an operand that is itself
             # prefix or atomic goes without parentheses.
-            inner = text[f.arg]
-            if not (_is_atomic(f.arg) or type(f.arg) in style.prefix):
-                inner = f"({inner})"
-            return style.prefix[type(f)] + inner
+            bare = _is_atomic(f.arg) or type(f.arg) in style.prefix
+            return [style.prefix[type(f)], *((f.arg,) if bare else ("(", f.arg, ")"))]
         case And(args=args) | Or(args=args):
-            return style.infix[type(f)].join(_operand(a, text, style) for a in args)
-    return _operand(f.left, text, style) + style.infix[type(f)] + _operand(f.right, text, style)
+            pieces: list[str | Formula] = []
+            for index, operand in enumerate(args):
+                if index:
+                    pieces.append(style.infix[type(f)])
+                pieces += _operand(operand, style)
+            return pieces
+    return [*_operand(f.left, style), style.infix[type(f)], *_operand(f.right, style)]
 
 
-def _operand(f: Formula, text: dict[Formula, str], style: _Style) -> str:
+def _operand(f: Formula, style: _Style) -> tuple[str | Formula, ...]:
     """An operand of an infix operator: parenthesised unless atomic or prefix.
 
     Spot's precedences would allow fewer parentheses, but ``a ∧ b ∨ c`` or
     ``a 𝒰 b 𝒰 c`` make a reader stop and think; the parentheses are cheap.
     """
     if _is_atomic(f) or type(f) in style.prefix:
-        return text[f]
-    return f"({text[f]})"
+        return (f,)
+    return ("(", f, ")")

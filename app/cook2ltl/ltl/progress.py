@@ -26,10 +26,9 @@ next ``Xψ`` yields ``ψ`` or ``ψ ∨ □⊥`` ("or the trace has ended").
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Generator, Iterable, Iterator
 from dataclasses import dataclass
 from enum import Enum
-from functools import lru_cache
 
 from cook2ltl.ltl.ast import (
     FALSE,
@@ -53,7 +52,8 @@ from cook2ltl.ltl.ast import (
     holds_at_end,
     negate,
 )
-from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, or_
+from cook2ltl.ltl.limits import WorkLimit
+from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, equiv_, or_
 
 Step = frozenset[Atom]
 
@@ -82,14 +82,56 @@ def verdict(remaining: Formula) -> Verdict:
 
 
 def progress(formula: Formula, step: Iterable[Atom]) -> Formula:
-    """The obligation left for the rest of the trace after ``step``."""
+    """The obligation left for the rest of the trace after ``step``.
+
+    Raises :class:`~cook2ltl.ltl.limits.FormulaTooLarge` rather than work
+    past :data:`~cook2ltl.ltl.limits.MAX_WORK` on one step.
+    """
     # Atoms the formula does not mention cannot matter; dropping them makes
     # the memo table hit far more often.
-    return _progress(formula, frozenset(step) & formula.atoms)
+    step = frozenset(step) & formula.atoms
+    answer = _known(formula, step)
+    return answer if answer is not None else _progress(formula, step)
 
 
-@lru_cache(maxsize=1 << 18)
-def _progress(f: Formula, step: Step) -> Formula:
+# Progressions already worked out, by (subformula, step); like an LRU cache
+# it keeps what it holds alive, so past this many entries it starts afresh.
+_MEMO: dict[tuple[Formula, Step], Formula] = {}
+_MEMO_ENTRIES = 1 << 18
+
+
+def clear_memo() -> None:
+    _MEMO.clear()
+
+
+def _progress(root: Formula, step: Step) -> Formula:
+    """Progression on an explicit stack of rules (see :func:`_rule`), so a
+    formula of any depth progresses without recursion."""
+    limit = WorkLimit("progressing the formula by one step")
+    stack = [(root, _rule(root))]
+    answer = None
+    while True:
+        node, rule = stack[-1]
+        limit.spend()
+        try:
+            operand = rule.send(answer)
+        except StopIteration as finished:
+            answer = finished.value
+            if len(_MEMO) >= _MEMO_ENTRIES:
+                _MEMO.clear()
+            _MEMO[node, step] = answer
+            stack.pop()
+            if not stack:
+                return answer
+            continue
+        answer = _known(operand, step)
+        if answer is None:
+            stack.append((operand, _rule(operand)))
+
+
+def _known(f: Formula, step: Step) -> Formula | None:
+    """The progression when it needs no work: of a constant, an atom or a
+    negated atom, or one in the memo table; None otherwise."""
     match f:
         case Constant():
             return f
@@ -97,51 +139,58 @@ def _progress(f: Formula, step: Step) -> Formula:
             return TRUE if f in step else FALSE
         case Not(arg=Atom() as a):
             return FALSE if a in step else TRUE
+    return _MEMO.get((f, step))
+
+
+def _rule(f: Formula) -> Generator[Formula, Formula, Formula]:
+    """The progression of one operator: ``(yield g)`` is the progression of ``g``."""
+    match f:
         case Not(arg=inner):
-            return _progress(negate(inner), step)
+            return (yield negate(inner))
         case And(args=args):
-            return _progress_and(args, step)
+            return (yield from _all_of(args))
         case Or(args=args):
-            return _progress_or(args, step)
+            return (yield from _any_of(args))
         case Implies(left=a, right=b):
-            return _progress_or((Not(a), b), step)
+            return (yield from _any_of((Not(a), b)))
         case Equiv(left=a, right=b):
-            return _progress_or((And(a, b), And(Not(a), Not(b))), step)
+            # Not (a ∧ b) ∨ (¬a ∧ ¬b): that doubles the formula at each nested ↔.
+            return equiv_((yield a), (yield b))
         case Next(arg=a):
             return and_(a, NONEMPTY) if holds_at_end(a) else a
         case WeakNext(arg=a):
             return a if holds_at_end(a) else or_(a, EMPTY)
         case Eventually(arg=a):
-            return or_(_progress(a, step), f)
+            return or_((yield a), f)
         case Always(arg=a):
-            return and_(_progress(a, step), f)
+            return and_((yield a), f)
         case Until(left=a, right=b) | WeakUntil(left=a, right=b):
             # b now, or a now and the same obligation from the next step on.
-            now = _progress(b, step)
-            return now if now is TRUE else or_(now, and_(_progress(a, step), f))
+            now = yield b
+            return now if now is TRUE else or_(now, and_((yield a), f))
         case Release(left=a, right=b) | StrongRelease(left=a, right=b):
             # b now, and either a now (released) or the same obligation next.
-            now = _progress(b, step)
-            return now if now is FALSE else and_(now, or_(_progress(a, step), f))
+            now = yield b
+            return now if now is FALSE else and_(now, or_((yield a), f))
     raise TypeError(f"not a formula: {f!r}")
 
 
-def _progress_and(args: tuple[Formula, ...], step: Step) -> Formula:
+def _all_of(operands: tuple[Formula, ...]) -> Generator[Formula, Formula, Formula]:
     # Operands are sorted atoms first, so a sequence like a ∧ ◇(…) stops at a
     # failed atom without walking the rest of the recipe.
     done = []
-    for a in args:
-        p = _progress(a, step)
+    for a in operands:
+        p = yield a
         if p is FALSE:
             return FALSE
         done.append(p)
     return and_(*done)
 
 
-def _progress_or(args: tuple[Formula, ...], step: Step) -> Formula:
+def _any_of(operands: tuple[Formula, ...]) -> Generator[Formula, Formula, Formula]:
     done = []
-    for a in args:
-        p = _progress(a, step)
+    for a in operands:
+        p = yield a
         if p is TRUE:
             return TRUE
         done.append(p)

@@ -39,40 +39,75 @@ from cook2ltl.ltl.ast import (
     holds_at_end,
     postorder,
 )
+from cook2ltl.ltl.limits import WorkLimit, charge
 
 NONEMPTY = Eventually(TRUE)  # "the trace goes on": false only on the empty rest
 EMPTY = Always(FALSE)  # "the trace has ended": true only on the empty rest
 
 
+# One implication test looks at no more than this many pairs of subformulas
+# and past that answers "not proved", which is sound: the proofs the rules
+# find in recipes take a few dozen, and the bound also keeps the recursion
+# well inside Python's limit.
+PROOF_STEPS = 100
+# Operands of one ∧ or ∨ compared pairwise for subsumption (the cost grows with
+# the square); a longer one only keeps operands a comparison would have dropped.
+SUBSUMPTION_OPERANDS = 32
+
+
 @lru_cache(maxsize=1 << 18)
 def implies(x: Formula, y: Formula) -> bool:
     """A cheap, sound and incomplete test of ``x ⇒ y`` on possibly empty traces."""
-    if x is y or x is FALSE or y is TRUE:
-        return True
-    # No rule below proves x ⇒ y unless x promises every atom y promises;
-    # checking that first spares a walk down a long recipe.
-    px, py = x.promised, y.promised
-    if py is None or (px is not None and not py <= px):
-        return False
-    if isinstance(y, And):
-        return all(implies(x, c) for c in y.args)
-    if isinstance(x, Or):
-        return all(implies(c, y) for c in x.args)
-    if isinstance(x, And) and any(implies(c, y) for c in x.args):
-        return True
-    if isinstance(y, Or) and any(implies(x, c) for c in y.args):
-        return True
-    if isinstance(y, Eventually):
-        # x needs a step and entails the goal now, or x promises it later.
-        if not holds_at_end(x) and implies(x, y.arg):
+    return _Proof().implies(x, y)
+
+
+class _Proof:
+    """One implication test: the pairs it has settled and the steps it has left."""
+
+    def __init__(self) -> None:
+        self.settled: dict[tuple[Formula, Formula], bool] = {}
+        self.steps_left = PROOF_STEPS
+
+    def implies(self, x: Formula, y: Formula) -> bool:
+        if x is y or x is FALSE or y is TRUE:
             return True
-        if isinstance(x, Eventually) and implies(x.arg, y):
+        answer = self.settled.get((x, y))
+        if answer is None:
+            if not self.steps_left:
+                return False
+            self.steps_left -= 1
+            charge()
+            answer = self.settled[x, y] = self._by_rules(x, y)
+        return answer
+
+    def _by_rules(self, x: Formula, y: Formula) -> bool:
+        # No rule below proves x ⇒ y unless x promises every atom y promises;
+        # checking that first spares a walk down a long recipe.
+        px, py = x.promised, y.promised
+        if py is None or (px is not None and not py <= px):
+            return False
+        if isinstance(y, And):
+            return all(self.implies(x, c) for c in y.args)
+        if isinstance(x, Or):
+            return all(self.implies(c, y) for c in x.args)
+        if isinstance(x, And) and any(self.implies(c, y) for c in x.args):
             return True
-        if isinstance(x, (Until, StrongRelease)) and implies(x.right, y):
+        if isinstance(y, Or) and any(self.implies(x, c) for c in y.args):
             return True
-    if isinstance(x, Always) and holds_at_end(y) and implies(x.arg, y):
-        return True
-    return _same_operator_implies(x, y)
+        if isinstance(y, Eventually):
+            # x needs a step and entails the goal now, or x promises it later.
+            if not holds_at_end(x) and self.implies(x, y.arg):
+                return True
+            if isinstance(x, Eventually) and self.implies(x.arg, y):
+                return True
+            if isinstance(x, (Until, StrongRelease)) and self.implies(x.right, y):
+                return True
+        if isinstance(x, Always) and holds_at_end(y) and self.implies(x.arg, y):
+            return True
+        # All temporal operators are monotone in each operand.
+        if (type(x), type(y)) not in _WEAKENINGS:
+            return False
+        return all(self.implies(a, b) for a, b in zip(x.children, y.children, strict=True))
 
 
 # Operator pairs (stronger, weaker) whose operands may then be compared pairwise.
@@ -84,13 +119,6 @@ _WEAKENINGS = {
 }  # fmt: skip
 
 
-def _same_operator_implies(x: Formula, y: Formula) -> bool:
-    # All temporal operators are monotone in each operand.
-    if (type(x), type(y)) not in _WEAKENINGS:
-        return False
-    return all(implies(a, b) for a, b in zip(x.children, y.children, strict=True))
-
-
 def and_(*operands: Formula) -> Formula:
     """Conjunction without contradictions and without operands a stronger one settles."""
     f = And(*operands)
@@ -99,6 +127,8 @@ def and_(*operands: Formula) -> Formula:
     present = set(f.args)
     if any(isinstance(a, Not) and a.arg in present for a in f.args):
         return FALSE
+    if len(f.args) > SUBSUMPTION_OPERANDS:
+        return f
     kept: list[Formula] = []
     for a in f.args:
         if any(implies(k, a) for k in kept):
@@ -116,6 +146,8 @@ def or_(*operands: Formula) -> Formula:
     present = set(f.args)
     if any(isinstance(a, Not) and a.arg in present for a in f.args):
         return TRUE
+    if len(f.args) > SUBSUMPTION_OPERANDS:
+        return f
     kept: list[Formula] = []
     for a in f.args:
         if any(implies(a, k) for k in kept):
@@ -123,6 +155,18 @@ def or_(*operands: Formula) -> Formula:
         kept = [k for k in kept if not implies(k, a)]
         kept.append(a)
     return Or(*kept)
+
+
+def equiv_(a: Formula, b: Formula) -> Formula:
+    """``a ↔ b`` with constants folded; ``x ↔ x`` is ``⊤`` and ``x ↔ ¬x`` is ``⊥``."""
+    if a is b:
+        return TRUE
+    if (isinstance(a, Not) and a.arg is b) or (isinstance(b, Not) and b.arg is a):
+        return FALSE
+    for x, y in ((a, b), (b, a)):
+        if isinstance(x, Constant):
+            return y if x.value else Not(y)
+    return Equiv(a, b)
 
 
 def eventually(f: Formula) -> Formula:
@@ -149,8 +193,10 @@ def _or_empty(f: Formula) -> Formula:
 @lru_cache(maxsize=1 << 16)
 def simplify(f: Formula) -> Formula:
     """Fold constants, drop settled operands and merge ``◇◇``, ``□□``, bottom up."""
+    limit = WorkLimit("simplifying the formula")
     done: dict[Formula, Formula] = {}
     for g in postorder(f):
+        limit.spend()
         done[g] = _simplify_node(g, [done[c] for c in g.children])
     return done[f]
 
@@ -177,7 +223,7 @@ def _simplify_node(f: Formula, kids: list[Formula]) -> Formula:
         case Implies():
             return _implies(*kids)
         case Equiv():
-            return _equiv(*kids)
+            return equiv_(*kids)
     return _binary_temporal(type(f), *kids)
 
 
@@ -189,13 +235,6 @@ def _implies(a: Formula, b: Formula) -> Formula:
     if b is FALSE:
         return Not(a)
     return Implies(a, b)
-
-
-def _equiv(a: Formula, b: Formula) -> Formula:
-    for x, y in ((a, b), (b, a)):
-        if isinstance(x, Constant):
-            return y if x.value else Not(y)
-    return Equiv(a, b)
 
 
 def _binary_temporal(op: type, a: Formula, b: Formula) -> Formula:
