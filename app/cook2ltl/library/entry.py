@@ -6,6 +6,7 @@ import json
 from dataclasses import dataclass
 from enum import StrEnum
 
+from cook2ltl.library.faults import reading_rows
 from cook2ltl.library.versions import checked
 from cook2ltl.reduce.body import is_empty
 
@@ -64,14 +65,15 @@ def as_row(entry: LibraryEntry) -> dict:
 
 
 def from_row(row: dict) -> LibraryEntry:
-    return LibraryEntry(
-        id=row["id"], primitives=row["primitives"], verb=row["verb"],
-        signature=tuple(part for part in row["signature"].split(",") if part), body=row["body"],
-        status=Status(row["status"]), model=row["model"], prompt_hash=row["prompt_hash"], created=row["created"],
-        validation=row["validation"], problems=tuple(json.loads(row["problems"])), reviewed_by=row["reviewed_by"],
-        reviewed_at=row["reviewed_at"], example=tuple(json.loads(row["example"]).items()), version=row["version"],
-        effect=effect_of(row["effect"]),
-    )
+    with reading_rows():
+        return LibraryEntry(
+            id=row["id"], primitives=row["primitives"], verb=row["verb"],
+            signature=tuple(part for part in row["signature"].split(",") if part), body=row["body"],
+            status=Status(row["status"]), model=row["model"], prompt_hash=row["prompt_hash"], created=row["created"],
+            validation=row["validation"], problems=tuple(json.loads(row["problems"])),
+            reviewed_by=row["reviewed_by"], reviewed_at=row["reviewed_at"],
+            example=tuple(json.loads(row["example"]).items()), version=row["version"], effect=effect_of(row["effect"]),
+        )
 
 
 def effect_column(effect: tuple[str, ...] | None) -> str | None:

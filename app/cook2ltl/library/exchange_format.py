@@ -27,7 +27,7 @@ from cook2ltl.library.schema import SCHEMA_VERSION
 from cook2ltl.library.store import LibraryEntry, Status
 from cook2ltl.library.versions import Review, Version
 from cook2ltl.paths import shown
-from cook2ltl.reduce.body import read_body
+from cook2ltl.reduce.body import is_empty, read_body
 
 READABLE = range(2, SCHEMA_VERSION + 1)  # export files this cook2ltl reads
 HINT = "export a library with `cook2ltl library export FILE` to see the format."
@@ -156,7 +156,7 @@ class EntryRecord(BaseModel):
         if stray is not None:
             raise _fault("review", 'a review names version {version}, which is not in the entry\'s "history"',
                          version=str(stray))
-        if self.status == "approved" and not read_body(self.body)[0]:
+        if self.status == "approved" and is_empty(self.body):
             raise _fault("approved", 'an entry with no plan (an empty "body") cannot be approved')
         return self
 

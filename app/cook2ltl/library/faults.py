@@ -18,6 +18,22 @@ PERM, BUSY, LOCKED, READONLY, IOERR, CORRUPT, FULL, CANTOPEN, NOTADB = 3, 5, 6, 
 READONLY_DBMOVED = READONLY | (4 << 8)  # the file was renamed or replaced while open
 
 
+DAMAGED_HINT = "restore it from a backup or an export; `sqlite3 FILE .recover` may save its entries."
+
+
+class DamagedRow(Exception):
+    """A row the program cannot read: a column missing, JSON that is not, a status it does not know."""
+
+
+@contextmanager
+def reading_rows() -> Iterator[None]:
+    """Rows made into entries and versions: what cannot be read in one is the library's damage, not a bug."""
+    try:
+        yield
+    except (KeyError, TypeError, ValueError, AttributeError) as error:
+        raise DamagedRow(f"{type(error).__name__}: {error}") from error
+
+
 @contextmanager
 def reported(path: Path) -> Iterator[None]:
     """Any sqlite3 error inside, raised again as the UserError that says what happened."""
@@ -25,6 +41,9 @@ def reported(path: Path) -> Iterator[None]:
         yield
     except sqlite3.Error as error:
         raise library_error(error, path) from error
+    except (DamagedRow, UnicodeDecodeError) as error:  # text in the file that is not UTF-8 is damage too
+        raise UserError(f"The action library {shown(path)} is damaged ({_one_line(error)}).", DAMAGED_HINT) \
+            from error
 
 
 def library_error(error: sqlite3.Error, path: Path) -> UserError:
@@ -43,15 +62,20 @@ def library_error(error: sqlite3.Error, path: Path) -> UserError:
         return UserError(f"The action library {where} is read-only; nothing was written.",
                          "make the file and its folder writable, or give --library a writable copy.")
     if code == NOTADB:
-        return UserError(f"{where} is not an action library ({error}).",
+        return UserError(f"{where} is not an action library ({_one_line(error)}).",
                          "give --library (or COOK2LTL_LIBRARY) a new path, or move that file away.")
     if code == CORRUPT:
-        return UserError(f"The action library {where} is damaged ({error}).",
-                         "restore it from a backup or an export; `sqlite3 FILE .recover` may save its entries.")
+        return UserError(f"The action library {where} is damaged ({_one_line(error)}).", DAMAGED_HINT)
     if code == CANTOPEN:
-        return UserError(f"Cannot open the action library {where} ({error}).",
+        return UserError(f"Cannot open the action library {where} ({_one_line(error)}).",
                          "give --library (or COOK2LTL_LIBRARY) a file in a folder you can write.")
     if code == IOERR:
-        return UserError(f"Cannot read or write the action library {where}: {error}.",
+        return UserError(f"Cannot read or write the action library {where}: {_one_line(error)}.",
                          "check the disk it is on, then try again.")
-    return UserError(f"The action library {where} failed: {error}.", "try again; nothing was written.")
+    return UserError(f"The action library {where} failed: {_one_line(error)}.", "try again; nothing was written.")
+
+
+def _one_line(error: Exception) -> str:
+    """SQLite's message on one line and short: a damaged schema's can quote the whole table."""
+    text = " ".join(str(error).split())
+    return text if len(text) <= 200 else f"{text[:199]}…"

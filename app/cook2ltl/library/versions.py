@@ -9,6 +9,7 @@ from datetime import datetime, timezone
 
 from sqlite_utils import Database
 
+from cook2ltl.library.faults import reading_rows
 from cook2ltl.library.schema import REVIEWS, VALIDATIONS, VERSIONS
 
 
@@ -55,10 +56,11 @@ def record(db: Database, version: Version) -> None:
 
 def history(db: Database, entry_id: int) -> tuple[Version, ...]:
     rows = db[VERSIONS].rows_where("entry_id = ?", [entry_id], order_by="version")
-    return tuple(Version(entry_id=row["entry_id"], version=row["version"], body=row["body"],
-                         validation=row["validation"], problems=tuple(json.loads(row["problems"])),
-                         author=row["author"], at=row["at"], note=row["note"], restores=row["restores"])
-                 for row in rows)
+    with reading_rows():
+        return tuple(Version(entry_id=row["entry_id"], version=row["version"], body=row["body"],
+                             validation=row["validation"], problems=tuple(json.loads(row["problems"])),
+                             author=row["author"], at=row["at"], note=row["note"], restores=row["restores"])
+                     for row in rows)
 
 
 def undo_target(versions: tuple[Version, ...]) -> Version | None:
@@ -76,4 +78,5 @@ def record_review(db: Database, review: Review) -> None:
 
 def reviews(db: Database, entry_id: int) -> tuple[Review, ...]:
     rows = db[REVIEWS].rows_where("entry_id = ?", [entry_id], order_by="rowid")
-    return tuple(Review(row["entry_id"], row["version"], row["status"], row["reviewer"], row["at"]) for row in rows)
+    with reading_rows():
+        return tuple(Review(row["entry_id"], row["version"], row["status"], row["reviewer"], row["at"]) for row in rows)
