@@ -160,6 +160,8 @@ def _rule(f: Formula) -> Generator[Formula, Formula, Formula]:
             return and_(a, NONEMPTY) if holds_at_end(a) else a
         case WeakNext(arg=a):
             return a if holds_at_end(a) else or_(a, EMPTY)
+        case Eventually(arg=Eventually() as inner) | Always(arg=Always() as inner):
+            return (yield inner)  # ◇◇φ is ◇φ, □□φ is □φ: a long run progresses as one
         case Eventually(arg=a):
             return or_((yield a), f)
         case Always(arg=a):
