@@ -5,6 +5,7 @@ parser needs a library (lark). Semantics are stated in :mod:`.progress`.
 """
 
 from cook2ltl.ltl import automaton as _automaton
+from cook2ltl.ltl import order as _order
 from cook2ltl.ltl import progress as _progress
 from cook2ltl.ltl import simplify as _simplify
 from cook2ltl.ltl.ast import (
@@ -42,11 +43,12 @@ __all__ = [
 
 
 def clear_caches() -> None:
-    """Empty the memo tables of progression, simplification and the DFA.
+    """Empty the memo tables of ordering, progression, simplification and the DFA.
 
     They keep the formulas they saw alive; a long session may drop them, and
     a benchmark must, to time a cold start.
     """
+    _order.clear_compared()
     _progress.clear_memo()
     for cached in (
         _simplify.implies,

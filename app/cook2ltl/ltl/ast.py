@@ -22,10 +22,10 @@ import weakref
 from bisect import insort
 from collections.abc import Iterator
 from dataclasses import dataclass, fields
-from functools import cmp_to_key
 from typing import ClassVar
 
 from cook2ltl.ltl.limits import MAX_PRINTED_NODES, charge
+from cook2ltl.ltl.order import SORT_KEY
 
 _INTERNED: weakref.WeakValueDictionary = weakref.WeakValueDictionary()
 _FORBIDDEN_IN_NAMES = frozenset('()",')
@@ -34,7 +34,7 @@ _FORBIDDEN_IN_NAMES = frozenset('()",')
 class Formula:
     """Base class of all formula nodes (never instantiated itself)."""
 
-    rank: ClassVar[int]
+    rank: ClassVar[int]  # place in the canonical order (see order.py): constants 0, atoms 1, then operators
     # Set once by ``_intern``, from the children's (so never by recursion):
     atoms: frozenset  # the atoms in the formula
     size: int  # number of nodes
@@ -43,8 +43,8 @@ class Formula:
 
     @property
     def key(self):
-        """Sort key of the canonical order (see :func:`compare`)."""
-        return _SORT_KEY(self)
+        """Sort key of the canonical order (see :mod:`cook2ltl.ltl.order`)."""
+        return SORT_KEY(self)
 
     def __str__(self) -> str:
         from cook2ltl.ltl.printer import to_unicode
@@ -269,11 +269,11 @@ class _NAry(Formula):
             base = max(runs, key=len)
             rest = loose.union(*(r for r in runs if r is not base)).difference(base)
         if len(rest) > len(base):
-            ordered = sorted(rest.union(base), key=_SORT_KEY)
+            ordered = sorted(rest.union(base), key=SORT_KEY)
         else:
             ordered = list(base)
             for f in rest:
-                insort(ordered, f, key=_SORT_KEY)
+                insort(ordered, f, key=SORT_KEY)
         if not ordered:
             return cls.unit
         if len(ordered) == 1:
@@ -302,60 +302,6 @@ class Implies(_Binary):
 
 class Equiv(_Binary):
     rank = 14
-
-
-def compare(x: Formula, y: Formula) -> int:
-    """-1, 0 or 1 as ``x`` sorts before, with or after ``y`` in the canonical order.
-
-    The order is lexicographic on (rank, operands…): constants, then atoms by
-    name and arguments, then the operators by rank, each by its operands in
-    turn (a ∧ or ∨ whose operands start another's comes first).
-    """
-    walked: list[tuple[Formula, Formula]] = []
-    answer = _first_difference(x, y, walked)
-    if len(_COMPARED) + len(walked) > _COMPARED_ENTRIES:
-        _COMPARED.clear()
-    for pair in walked:
-        _COMPARED[pair] = answer
-    return answer
-
-
-# The answers for pairs of operators compare() walked through, so formulas
-# built level by level (as progression builds them) compare in one step.
-_COMPARED: dict[tuple[Formula, Formula], int] = {}
-_COMPARED_ENTRIES = 1 << 16
-
-
-def _first_difference(x: Formula, y: Formula, walked: list[tuple[Formula, Formula]]) -> int:
-    """compare() with a loop. Equal subformulas are one object, so it goes down
-    a single path to the first pair that differ, and that pair's answer is the
-    answer of every pair it walked through (``walked``)."""
-    pairs: list = [(x, y)]
-    while pairs:
-        a, b = pairs.pop()
-        if isinstance(a, int):  # operand counts of two ∧ (or ∨) whose shared operands are equal
-            if a != b:
-                return -1 if a < b else 1
-            continue
-        if a is b:
-            continue
-        if a.rank != b.rank:
-            return -1 if a.rank < b.rank else 1
-        mine, theirs = a.constructor_args(), b.constructor_args()
-        if isinstance(a, (Constant, Atom)):
-            return -1 if mine < theirs else 1
-        known = _COMPARED.get((a, b))
-        if known is not None:
-            return known
-        walked.append((a, b))
-        charge()
-        if isinstance(a, _NAry):
-            pairs.append((len(mine), len(theirs)))
-        pairs.extend(reversed(list(zip(mine, theirs))))
-    return 0
-
-
-_SORT_KEY = cmp_to_key(compare)
 
 
 def negate(f: Formula) -> Formula:

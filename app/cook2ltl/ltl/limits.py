@@ -2,8 +2,9 @@
 
 No operation on formulas recurses with the formula's depth: the parser is an
 LALR automaton, the AST orders and prints with loops, progression runs on an
-explicit stack. So depth alone never crashes anything. What is left to bound
-is work and output, with these limits:
+explicit stack, and the one recursive test (does x imply y, in simplify.py)
+gives up after PROOF_STEPS pairs. So depth alone never crashes anything. What
+is left to bound is work and output, with these limits:
 
 * ``MAX_FORMULA_CHARS`` — formula text given to the parser. Typed formulas are
   a few hundred characters; the limit keeps parsing (and the per-node atom

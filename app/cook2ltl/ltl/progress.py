@@ -154,7 +154,8 @@ def _rule(f: Formula) -> Generator[Formula, Formula, Formula]:
         case Implies(left=a, right=b):
             return (yield from _any_of((Not(a), b)))
         case Equiv(left=a, right=b):
-            # Not (a ∧ b) ∨ (¬a ∧ ¬b): that doubles the formula at each nested ↔.
+            # The sides progressed, still an equivalence: the expansion
+            # (a ∧ b) ∨ (¬a ∧ ¬b) would double the formula at each nested ↔.
             return equiv_((yield a), (yield b))
         case Next(arg=a):
             return and_(a, NONEMPTY) if holds_at_end(a) else a
