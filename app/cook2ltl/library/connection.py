@@ -29,12 +29,15 @@ def open_library(path: Path, read_only: bool) -> Database:
         raise UserError(f"The action library {shown(path)} is not a file.", "give --library a file path.")
     if found is None:
         _make_folder(path)
-    read_only = read_only and found is not None  # a new file is created by the first command that opens it
+        _migrate_apart(path)  # the first command to open a library creates it
     db = _connect(path, read_only)
     try:
         with reported(path):
             if is_older(db, path):
-                _migrate(db, path, read_only)
+                if read_only:
+                    _migrate_apart(path)
+                else:
+                    migrate(db, path)
             if not read_only:
                 db.enable_wal()  # after the checks, so another program's SQLite file is left as it was
     except BaseException:
@@ -43,15 +46,13 @@ def open_library(path: Path, read_only: bool) -> Database:
     return db
 
 
-def _migrate(db: Database, path: Path, read_only: bool) -> None:
-    """Migrate on this connection, or, beside a read-only one, on a writable one of its own."""
-    if not read_only:
-        migrate(db, path)
-        return
+def _migrate_apart(path: Path) -> None:
+    """Create or migrate the file through a writable connection of its own, closed when done."""
     writer = _connect(path, read_only=False)
     try:
-        migrate(writer, path)
-        writer.enable_wal()
+        with reported(path):
+            migrate(writer, path)
+            writer.enable_wal()
     finally:
         writer.close()
 

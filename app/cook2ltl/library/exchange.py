@@ -133,8 +133,9 @@ def _refuse_failed_approvals(records: list[Exported], path: Path) -> None:
     for number, record in enumerate(records, start=1):
         entry = record.entry
         if entry.status == Status.APPROVED and entry.validation == "failed":
+            problems = " ".join("; ".join(entry.problems).split())[:200] or "no details"  # on one line
             raise UserError(f"{shown(path)}: entry {number} ({entry.primitives} {entry.action}) is approved but "
-                            f"failed the kitchen check: {'; '.join(entry.problems) or 'no details'}.",
+                            f"failed the kitchen check: {problems}.",
                             "import with --force to keep its approval (as `approve --force`), or fix the entry "
                             "in the library it comes from.")
 

@@ -33,7 +33,7 @@ def replace_whole(path: Path, data: bytes, hint: str) -> None:
     the same folder, flushed to the disk, then renamed over the target. A link is followed (the link stays), and
     only a regular file is replaced: never a device, a folder or a FIFO."""
     target = Path(os.path.realpath(path))
-    found = file_status(target, "the export file")
+    found = file_status(target, "the file to write")
     if found is not None and not stat.S_ISREG(found.st_mode):
         raise UserError(f"Cannot write {shown(path)}: it is {_kind(found.st_mode)}, not a regular file.", hint)
     temporary = target.with_name(f".{target.name[:64]}.{secrets.token_hex(4)}.tmp")
