@@ -34,3 +34,16 @@ def test_object_states_in_the_order_first_touched_and_pieces_that_are_gone():
     assert [(s.name, s.where, s.state) for s in states] == [
         ("Apple", "Fridge", "sliced"), ("Fridge", "", "closed, cold"), ("Mug", "in hand", "filled with coffee"),
         ("Bread", "", "gone (sliced or broken into pieces)")]
+
+
+def test_a_formula_too_large_to_print_is_noted_not_drawn(monkeypatch):
+    """The app never fails drawing a formula: one past the printer's limit shows as too large."""
+    import cook2ltl.ltl.printer as printer
+    from cook2ltl.ltl.parser import parse
+    from cook2ltl.ui.literal import formula_text, shown_formula
+
+    formula = parse("F(a & F(b & F c))")
+    assert formula_text(formula) == "◇(a ∧ ◇(b ∧ ◇c))"
+    monkeypatch.setattr(printer, "MAX_PRINTED_NODES", 3)
+    assert formula_text(formula) is None and formula_text(formula, spot=True) is None
+    assert shown_formula(formula).plain == "(too large to show)"

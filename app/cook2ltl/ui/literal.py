@@ -29,3 +29,20 @@ def shown_styled(text: str, styles: Iterable[tuple[int, int, str]]) -> Content:
     for start, end, style in styles:
         content = content.stylize(style, offsets[start], offsets[end])
     return content
+
+
+def formula_text(formula, spot: bool = False) -> str | None:
+    """The formula written in Unicode (or Spot) syntax; None when it is too large to write out."""
+    from cook2ltl.ltl.limits import FormulaTooLarge
+    from cook2ltl.ltl.printer import to_spot, to_unicode
+
+    try:
+        return (to_spot if spot else to_unicode)(formula)
+    except FormulaTooLarge:
+        return None
+
+
+def shown_formula(formula, spot: bool = False) -> Content:
+    """The formula shown literally, or a note that it is too large to show (the app never fails drawing it)."""
+    text = formula_text(formula, spot)
+    return shown(text) if text is not None else Content("(too large to show)").stylize("$text-muted")

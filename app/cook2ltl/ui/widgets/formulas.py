@@ -8,7 +8,7 @@ from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
-from cook2ltl.ui.literal import shown
+from cook2ltl.ui.literal import shown, shown_formula
 
 if TYPE_CHECKING:
     from cook2ltl.ltl.ast import Formula
@@ -39,17 +39,14 @@ class FormulaList(Static):
         self.refresh_formulas()
 
     def refresh_formulas(self) -> None:
-        from cook2ltl.ltl.printer import to_spot, to_unicode
-
-        write = to_spot if self.spot else to_unicode
         syntax = Content(f"syntax: {'Spot' if self.spot else 'Unicode'} (ctrl+l switches)").stylize("$text-muted")
         blocks = [syntax]
         for result in self.steps:
             block = shown(f"{result.step.index + 1:>3}  {result.step.sentence.text}").stylize("bold")
-            block += Content("\n     φ = ") + shown(write(result.formula)).stylize("$text-warning")
+            block += Content("\n     φ = ") + shown_formula(result.formula, self.spot).stylize("$text-warning")
             for problem in result.problems:
                 block += Content("\n     ! ").stylize("bold $text-error") + shown(problem)
             blocks.append(block)
         if self.whole is not None:
-            blocks.append(Content("whole recipe\n").stylize("bold") + shown(write(self.whole)).stylize("$text-warning"))
+            blocks.append(Content("whole recipe\n").stylize("bold") + shown_formula(self.whole, self.spot).stylize("$text-warning"))
         self.update(Content("\n\n").join(blocks))

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from textual.content import Content
 from textual.widgets import Static
 
-from cook2ltl.ui.literal import shown, shown_styled
+from cook2ltl.ui.literal import formula_text, shown, shown_formula, shown_styled
 
 if TYPE_CHECKING:
     from cook2ltl.kitchen.rollout import TraceStep
@@ -28,7 +28,9 @@ def marked(formula: Formula, met: frozenset[Atom]) -> Content:
     """The formula in Unicode with every occurrence of a met atom styled."""
     from cook2ltl.ltl.printer import to_unicode
 
-    text = to_unicode(formula)
+    text = formula_text(formula)
+    if text is None:
+        return shown_formula(formula)
     ranges = []
     for atom in met:
         # Not part of a longer name; an atom without arguments is not an argument of another atom either.
@@ -109,10 +111,8 @@ class FormulaProgress(Static):
         self._draw(rollout.met, rollout.remaining, rollout.verdict.value, lines)
 
     def _draw(self, met: frozenset[Atom], remaining: Formula, verdict: str, tail: list[Content] = ()) -> None:
-        from cook2ltl.ltl.printer import to_unicode
-
         lines = [*self.header, _label("φ") + marked(self.formula, met),
-                 _label("remaining") + shown(to_unicode(remaining)),
+                 _label("remaining") + shown_formula(remaining),
                  _label("now") + verdict_content(verdict), *tail]
         self.update(Content("\n").join(lines))
 
