@@ -202,7 +202,7 @@ class LibraryScreen(WorkScreen):
 
         def saved(edited: Edited | None) -> None:
             if edited is not None and edited.body != entry.body:
-                self._write(f"saving version {entry.version + 1} of #{entry.id}", entry.id, "edit", edited)
+                self._write(f"saving version {entry.version + 1} of #{entry.id}", entry.id, "edit", (edited, entry))
 
         self.app.push_screen(EntryEditor(entry), saved)
 
@@ -231,7 +231,8 @@ class LibraryScreen(WorkScreen):
         elif change == "undo":
             entry = library.undo(entry_id, by)
         else:
-            entry = library.edit(entry_id, argument.body, by, argument.check.validation, argument.check.problems,
-                                 note="edited in the app")
+            edited, read = argument  # saved only if nobody approved or edited the entry since it was read
+            entry = library.edit(entry_id, edited.body, by, edited.check.validation, edited.check.problems,
+                                 note="edited in the app", expected=read)
         self.post_message(LibraryLoaded(library.search(query), entry_id))
         self.post_message(WorkProgress(f"#{entry.id} {entry.action}: {entry.status.value}, version {entry.version}"))
