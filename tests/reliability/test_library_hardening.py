@@ -231,6 +231,24 @@ def test_a_damaged_library_is_said_to_be_damaged_and_only_a_foreign_file_is_not_
     assert_refused(cook2ltl("library", "list", "--library", str(foreign)), "is not an action library", MOVE_AWAY)
 
 
+@pytest.mark.parametrize("damage", [
+    "PRAGMA user_version = -3",  # a schema version no cook2ltl writes
+    "DROP TABLE actions_fts",  # the search index gone
+    "UPDATE actions SET version = 'seven', verb = 7 WHERE id = 1",  # a row's columns of the wrong type
+])
+def test_damage_the_fuzzer_found_is_said_to_be_damage(library, damage):
+    """(Found by `cook2ltl bench fuzz`: IndexError, ValueError, TypeError and AttributeError from damaged files.)"""
+    with sqlite3.connect(library) as conn:
+        conn.executescript(damage)
+    with pytest.raises(UserError, match="is damaged"):
+        store = Library(library)
+        try:
+            store.entries()
+            store.search("boil")
+        finally:
+            store.close()
+
+
 # --- bounded reads -----------------------------------------------------------------------------------------------
 
 def test_endless_or_special_files_are_refused_before_they_are_read(tmp_path, library):

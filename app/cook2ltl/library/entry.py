@@ -67,13 +67,28 @@ def as_row(entry: LibraryEntry) -> dict:
 def from_row(row: dict) -> LibraryEntry:
     with reading_rows():
         return LibraryEntry(
-            id=row["id"], primitives=row["primitives"], verb=row["verb"],
-            signature=tuple(part for part in row["signature"].split(",") if part), body=row["body"],
-            status=Status(row["status"]), model=row["model"], prompt_hash=row["prompt_hash"], created=row["created"],
+            id=_whole(row["id"]), primitives=_text(row["primitives"]), verb=_text(row["verb"]),
+            signature=tuple(part for part in row["signature"].split(",") if part), body=_text(row["body"]),
+            status=Status(row["status"]), model=_text(row["model"]), prompt_hash=row["prompt_hash"],
+            created=row["created"],
             validation=row["validation"], problems=tuple(json.loads(row["problems"])),
             reviewed_by=row["reviewed_by"], reviewed_at=row["reviewed_at"],
-            example=tuple(json.loads(row["example"]).items()), version=row["version"], effect=effect_of(row["effect"]),
+            example=tuple(json.loads(row["example"]).items()), version=_whole(row["version"]),
+            effect=effect_of(row["effect"]),
         )
+
+
+def _whole(value: object) -> int:
+    """A column that must hold a whole number (a damaged file may hold NULL or text there)."""
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise TypeError(f"{value!r} where a whole number belongs")
+    return value
+
+
+def _text(value: object) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"{value!r} where text belongs")
+    return value
 
 
 def effect_column(effect: tuple[str, ...] | None) -> str | None:

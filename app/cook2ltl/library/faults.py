@@ -64,7 +64,7 @@ def library_error(error: sqlite3.Error, path: Path) -> UserError:
     if code == NOTADB:
         return UserError(f"{where} is not an action library ({_one_line(error)}).",
                          "give --library (or COOK2LTL_LIBRARY) a new path, or move that file away.")
-    if code == CORRUPT:
+    if code == CORRUPT or (extended == 0 and "decode" in str(error)):  # text in the schema that is not UTF-8
         return UserError(f"The action library {where} is damaged ({_one_line(error)}).", DAMAGED_HINT)
     if code == CANTOPEN:
         return UserError(f"Cannot open the action library {where} ({_one_line(error)}).",

@@ -11,6 +11,7 @@ from pathlib import Path
 from sqlite_utils import Database
 
 from cook2ltl.errors import UserError
+from cook2ltl.library.faults import DAMAGED_HINT
 from cook2ltl.paths import shown
 
 TABLE = "actions"
@@ -97,6 +98,8 @@ def schema_version(db: Database, path: Path) -> int:
     """The file's schema version, read without a lock; a newer schema or another program's database is refused."""
     conn, newest = db.conn, len(MIGRATIONS)
     version = conn.execute("PRAGMA user_version").fetchone()[0]
+    if version < 0:  # no cook2ltl writes one: the header is damaged
+        raise UserError(f"The action library {shown(path)} is damaged (schema version {version}).", DAMAGED_HINT)
     if version > newest:
         raise UserError(f"The action library {shown(path)} has schema version {version}; this cook2ltl knows "
                         f"{newest}.", "upgrade cook2ltl, or use another --library.")

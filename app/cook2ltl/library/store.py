@@ -35,7 +35,7 @@ from cook2ltl.library.connection import open_library
 from cook2ltl.library.entry import NO_PLAN, LibraryEntry, Status, as_row, effect_column, effect_of, \
     from_row, shown_body
 from cook2ltl.library.effect import KEEP, Keep, checked_effect, shown_effect
-from cook2ltl.library.faults import SQL_ERROR, reported
+from cook2ltl.library.faults import SQL_ERROR, DamagedRow, reported
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE
 from cook2ltl.library.versions import Review, Version, checked, now
 from cook2ltl.paths import shown, user_path
@@ -122,8 +122,10 @@ class Library:
             return self.entries()
         try:
             return tuple(from_row(row) for row in self._db()[TABLE].search(text))
+        except ValueError as error:  # sqlite-utils finds no full-text index: the file lost it
+            raise DamagedRow(f"the search index is gone ({error})") from error
         except sqlite3.OperationalError as error:
-            if error.sqlite_errorcode != SQL_ERROR:  # a lock or a full disk, not the query
+            if getattr(error, "sqlite_errorcode", None) != SQL_ERROR:  # a lock, a full disk, damage: not the query
                 raise
             raise UserError(f"Cannot search the library for {text!r}: {error}.",
                             'search for words (boil pot), a prefix (pick*), or put text with punctuation '
