@@ -19,6 +19,13 @@ def require_utf8(value: str, what: str, hint: str) -> str:
     try:
         value.encode("utf-8")
     except UnicodeEncodeError:
-        shown = value.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+        # bytes from argv come back as they were; a lone surrogate of any other kind is written as an escape
+        shown = value.encode("utf-8", "surrogateescape" if _only_escaped_bytes(value) else "backslashreplace")
+        shown = shown.decode("utf-8", "replace")
         raise UserError(f"{what} {shown!r} is not UTF-8 text.", hint) from None
     return value
+
+
+def _only_escaped_bytes(value: str) -> bool:
+    """Whether every surrogate in `value` is one surrogateescape made of a byte (U+DC80 to U+DCFF)."""
+    return all(not "\ud800" <= char <= "\udfff" or "\udc80" <= char <= "\udcff" for char in value)

@@ -86,7 +86,9 @@ def _check_address(sock: socket.socket, address) -> None:
 
 
 def _refuse(host: object) -> None:
-    name = host.decode(errors="replace") if isinstance(host, bytes) else str(host)
+    from cook2ltl.text_safety import visible
+
+    name = visible(host.decode(errors="replace") if isinstance(host, bytes) else str(host))  # a host name is text
     blocked_hosts.append(name)
     message = f"cook2ltl is offline: refused a network connection to {name}"
     print(message, file=sys.stderr)  # seen even when a library swallows the error

@@ -109,3 +109,29 @@ def test_the_command_line_refuses_bad_paths_in_one_line(tmp_path, case, argument
     assert result.returncode == 2 and "Traceback" not in err, err
     assert err.startswith("error: ") and message in " ".join(err.split()), err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml", "recipe.txt"]  # nothing written
+
+
+def test_the_kitchens_paths_from_the_environment_are_checked_too(monkeypatch):
+    """$COOK2LTL_ASSETS as the kitchens read it, $COOK2LTL_THOR_EXECUTABLE and $COOK2LTL_KITCHEN_CACHE: a path
+    too long or holding raw bytes is a clear refusal, never a traceback."""
+    from cook2ltl.errors import UserError
+    from cook2ltl.kitchen import launcher, scenes
+
+    long = "/" + "x" * 300
+    monkeypatch.setenv("COOK2LTL_ASSETS", long)
+    with pytest.raises(UserError, match="COOK2LTL_ASSETS .* too long"):
+        scenes.kitchens_dir()
+    monkeypatch.delenv("COOK2LTL_ASSETS")
+    monkeypatch.setenv(launcher.THOR_EXECUTABLE_ENV, long)
+    with pytest.raises(launcher.KitchenUnavailable, match="too long"):
+        launcher.find_thor_build()
+    monkeypatch.setenv("COOK2LTL_KITCHEN_CACHE", "~nobody-of-that-name/cache")
+    with pytest.raises(UserError, match="COOK2LTL_KITCHEN_CACHE"):
+        launcher._cache_dir()
+
+
+def test_a_lone_surrogate_is_refused_clearly():
+    from cook2ltl.errors import UserError, require_utf8
+
+    with pytest.raises(UserError, match=r"'x\\\\ud800y' is not UTF-8"):
+        require_utf8("x\ud800y", "name", "hint")

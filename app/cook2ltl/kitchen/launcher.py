@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import UserError
+from ..paths import user_path
 from . import scenes
 
 THOR_EXECUTABLE_ENV = "COOK2LTL_THOR_EXECUTABLE"  # path to a THOR player binary
@@ -151,7 +152,10 @@ def find_thor_build(executable: str | os.PathLike | None = None) -> ThorBuild:
     release staged in ~/.ai2thor/releases (the folder the Controller reads)."""
     chosen = executable or os.environ.get(THOR_EXECUTABLE_ENV)
     if chosen:
-        path = Path(chosen).expanduser()
+        try:
+            path = user_path(chosen, THOR_EXECUTABLE_ENV)
+        except UserError as error:
+            raise KitchenUnavailable(error.message) from None
         if not (path.is_file() and os.access(path, os.X_OK)):
             raise KitchenUnavailable(f"{path} is not an executable file (from {THOR_EXECUTABLE_ENV} or settings)")
         guessed = "CloudRendering" if "CloudRendering" in path.name else "Linux64"
@@ -224,7 +228,8 @@ def run_player() -> None:
 def _cache_dir() -> Path:
     from platformdirs import user_cache_dir
 
-    folder = Path(os.environ.get("COOK2LTL_KITCHEN_CACHE") or user_cache_dir("cook2ltl")) / "kitchen"
+    cache = os.environ.get("COOK2LTL_KITCHEN_CACHE")
+    folder = (user_path(cache, "$COOK2LTL_KITCHEN_CACHE") if cache else Path(user_cache_dir("cook2ltl"))) / "kitchen"
     if any(c.isspace() for c in str(folder)):
         folder = Path(tempfile.gettempdir()) / f"cook2ltl-kitchen-{os.getuid()}"
     return folder

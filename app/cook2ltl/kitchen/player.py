@@ -67,7 +67,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     server_type = os.environ.get("AI2THOR_SERVER_TYPE", "FIFO")
     if server_type != "FIFO":
-        print(f"cook2ltl kitchen player: only the FIFO server is supported, not {server_type}", file=sys.stderr)
+        print(f"cook2ltl kitchen player: only the FIFO server is supported, not {server_type!r}", file=sys.stderr)
         return 2
     width, height = screen_size(argv)
     threading.Thread(target=exit_with_parent, args=(os.getppid(),), daemon=True).start()

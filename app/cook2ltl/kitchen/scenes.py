@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import re
 import tomllib
 from dataclasses import replace
@@ -19,8 +18,6 @@ from pathlib import Path
 
 from .state import ABILITIES, Agent, KitchenState, SliceRule, Thing, TypeRules
 
-# The package lives in app/cook2ltl/kitchen/, the project root three levels up.
-_PROJECT_ROOT = Path(__file__).resolve().parents[3]
 _SCENE_NAME = re.compile(r"^(FloorPlan\d+)(?:_physics)?$")
 
 
@@ -29,8 +26,9 @@ class UnknownScene(ValueError):
 
 
 def kitchens_dir() -> Path:
-    root = os.environ.get("COOK2LTL_ASSETS")
-    return (Path(root).expanduser() if root else _PROJECT_ROOT / "assets") / "kitchens"
+    from ..paths import assets_dir  # $COOK2LTL_ASSETS, checked as every path a user gives
+
+    return assets_dir() / "kitchens"
 
 
 def scene_names() -> list[str]:
