@@ -4,6 +4,7 @@ check every path a user gives goes through (an option, an argument, a setting or
 from __future__ import annotations
 
 import os
+from importlib import resources
 from pathlib import Path
 
 from platformdirs import user_cache_dir, user_config_dir, user_data_dir
@@ -11,8 +12,12 @@ from platformdirs import user_cache_dir, user_config_dir, user_data_dir
 from cook2ltl.errors import UserError
 
 APP = "cook2ltl"
-# The package lives in app/cook2ltl/, so the project root is two levels up.
-PROJECT_ROOT = Path(__file__).resolve().parents[2]
+# In a checkout (PYTHONPATH=app, or the editable install) the package lives in app/cook2ltl/, so the project root is
+# two levels up, and the run-time files are the checkout's assets/ and models/models.toml. An installed wheel
+# carries its own copies of both inside the package, as cook2ltl/_assets/ and cook2ltl/_models/ (pyproject.toml).
+PACKAGE = Path(__file__).resolve().parent
+PROJECT_ROOT = PACKAGE.parents[1]
+IN_CHECKOUT = PACKAGE.parent.name == "app" and (PROJECT_ROOT / "pyproject.toml").is_file()
 MAX_PATH_BYTES = 4096  # Linux's PATH_MAX: longer fails in every call with ENAMETOOLONG
 MAX_NAME_BYTES = 255  # NAME_MAX: the longest one folder or file name may be
 SHOWN_CHARACTERS = 160  # a path longer than this is shown with its middle left out
@@ -58,9 +63,22 @@ def _env_path(var: str, default: Path) -> Path:
     return user_path(value, f"${var}") if value else default
 
 
+def _run_time_files(var: str, folder: str) -> Path:
+    """$var if set; else the checkout's folder when running from one; else the copy the wheel installed (wheels
+    are installed unpacked, so it is a real folder)."""
+    return _env_path(var, PROJECT_ROOT / folder if IN_CHECKOUT else Path(resources.files(APP) / f"_{folder}"))
+
+
+def inside_package(path: Path) -> bool:
+    """Whether `path` is in the installed package (a wheel's copy of assets/ or models/): cook2ltl never writes
+    there, and it holds no training data."""
+    return path.resolve().is_relative_to(PACKAGE)
+
+
 def models_dir() -> Path:
-    """The manifest folder (models/models.toml) and the links to cached weights."""
-    return _env_path("COOK2LTL_MODELS_DIR", PROJECT_ROOT / "models")
+    """The manifest folder (models/models.toml), in a checkout also the training data and the links to cached
+    weights (the weights themselves are always in model_cache_dir())."""
+    return _run_time_files("COOK2LTL_MODELS_DIR", "models")
 
 
 def model_cache_dir() -> Path:
@@ -69,7 +87,8 @@ def model_cache_dir() -> Path:
 
 
 def assets_dir() -> Path:
-    return _env_path("COOK2LTL_ASSETS", PROJECT_ROOT / "assets")
+    """Primitive sets, PDDL domains, prompts, kitchens, tasks, the verb-effect table and the demo recipe."""
+    return _run_time_files("COOK2LTL_ASSETS", "assets")
 
 
 def config_file() -> Path:

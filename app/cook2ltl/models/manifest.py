@@ -95,6 +95,10 @@ def trained_path(entry: ModelEntry) -> Path:
     from cook2ltl.ner.train import TrainConfig, fingerprint
 
     data = paths.models_dir() / entry.data
+    if paths.inside_package(paths.models_dir()):  # a wheel has no training data: the checkpoint a checkout trained
+        trained = sorted(paths.model_cache_dir().glob(f"{entry.name}-{'[0-9a-f]' * 12}/{STAMP}"),
+                         key=lambda stamp: stamp.stat().st_mtime)
+        return trained[-1].parent if trained else paths.model_cache_dir() / f"{entry.name}-(not trained)"
     return paths.model_cache_dir() / f"{entry.name}-{fingerprint(data, TrainConfig())[:12]}"
 
 

@@ -48,9 +48,9 @@ def provision(entries: Iterable[ModelEntry], force: bool = False) -> Iterator[Ev
 
 
 def link(entry: ModelEntry) -> None:
-    """models/<name> points at the cached files, so a lab sees what is in use."""
+    """models/<name> points at the cached files, so a lab sees what is in use (not in an installed wheel)."""
     target = model_path(entry)
-    if target is None:
+    if target is None or paths.inside_package(paths.models_dir()):
         return
     where = paths.models_dir() / entry.name
     if where.is_symlink() or where.is_file():
@@ -119,6 +119,10 @@ def _write_atomically(target: Path, sources) -> None:
 def _train(entry: ModelEntry) -> Iterator[Event]:
     from cook2ltl.ner.train import TrainConfig, train
 
+    if paths.inside_package(paths.models_dir()):
+        raise UserError(f"{entry.name} is trained from models/{entry.data} of a checkout of cook2ltl, which an "
+                        "installed wheel does not carry.", "run `make models` once in a checkout: the model "
+                        "cache it trains into is shared; or set COOK2LTL_MODELS_DIR to a checkout's models/.")
     encoder = load_manifest().get(entry.encoder)
     if encoder is None or state_of(encoder) != State.READY:
         raise UserError(f"{entry.name} needs the encoder {entry.encoder!r} first.", "run `make models`.")
