@@ -15,8 +15,8 @@ import statistics
 import time
 
 from cook2ltl.reduce.action import parameter
-from cook2ltl.reduce.llm import load_model
-from cook2ltl.reduce.model import Action
+from cook2ltl.assembly.backends import load_model
+from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 

@@ -16,8 +16,8 @@ from pathlib import Path
 
 from cook2ltl import offline
 from cook2ltl.bench.table2 import TASK_SETS, choose_tasks, rollout_runs, summary
-from cook2ltl.pipeline import Variant
-from cook2ltl.reduce.llm import DEFAULT_MODEL
+from cook2ltl.pipeline.records import Variant
+from cook2ltl.assembly.backends import DEFAULT_MODEL
 
 
 def main() -> None:

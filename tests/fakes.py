@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from cook2ltl.domain import Label, Span, Token
+from cook2ltl.domain.recipe import Label, Span, Token
 
 
 class ScriptedSpans:

@@ -2,7 +2,7 @@
 
 import pytest
 
-from cook2ltl.models.manifest import State, load_manifest, state_of
+from cook2ltl.assembly.manifest import State, load_manifest, state_of
 
 
 def require_models(*names: str) -> None:

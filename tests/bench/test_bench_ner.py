@@ -1,8 +1,8 @@
 """The spaCy baseline of the NER benchmark: trained on the split's sentences, cached, scored strictly."""
 
 from cook2ltl.bench.ner import SpacyRecipe, SpacySpans, score, spacy_baseline, split
-from cook2ltl.domain import Label, Span
-from cook2ltl.ner.examples import SentenceExample
+from cook2ltl.domain.recipe import Label, Span
+from cook2ltl.parse.training.examples import SentenceExample
 from cook2ltl.paths import models_dir
 
 SENTENCES = [SentenceExample("recipe0", text, spans) for text, spans in [

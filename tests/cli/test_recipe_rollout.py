@@ -16,12 +16,11 @@ from tests.translate.test_world_rollout import ANSWERS, PASTA, SPANS
 
 @pytest.fixture
 def recipe(monkeypatch, tmp_path):
-    import cook2ltl.reduce.llm
-    import cook2ltl.stack
+    import cook2ltl.assembly.backends
 
-    monkeypatch.setattr(cook2ltl.stack, "span_extractor", lambda settings: ScriptedSpans(SPANS))
-    monkeypatch.setattr(cook2ltl.stack, "dependency_parser", lambda: ScriptedDependencies())
-    monkeypatch.setattr(cook2ltl.reduce.llm, "load_model", lambda name: ScriptedModel(dict(ANSWERS)))
+    monkeypatch.setattr(cook2ltl.assembly.backends, "span_extractor", lambda settings: ScriptedSpans(SPANS))
+    monkeypatch.setattr(cook2ltl.assembly.backends, "dependency_parser", lambda: ScriptedDependencies())
+    monkeypatch.setattr(cook2ltl.assembly.backends, "load_model", lambda name: ScriptedModel(dict(ANSWERS)))
     monkeypatch.setenv("COOK2LTL_LIBRARY", str(tmp_path / "library.sqlite"))
     monkeypatch.setenv("COOK2LTL_CONFIG", str(tmp_path / "none.toml"))
     path = tmp_path / "pasta.txt"
@@ -64,11 +63,10 @@ def test_json_gives_per_step_the_actions_with_their_check_and_trace(recipe):
 
 
 def test_a_plan_that_misses_its_effect_exits_1_with_the_problem_under_its_step(recipe, monkeypatch):
-    import cook2ltl.reduce.llm
 
     # no planner to complete it: drain's plan stops holding the pot
     monkeypatch.setattr("cook2ltl.world.kitchens.FastDownward", lambda kit: None)
-    monkeypatch.setattr(cook2ltl.reduce.llm, "load_model",
+    monkeypatch.setattr("cook2ltl.assembly.backends.load_model",
                         lambda name: ScriptedModel({**ANSWERS, "drain": "pick_up(pot)"}))
     shown = rollout(str(recipe))
     assert shown.exit_code == 1

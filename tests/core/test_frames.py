@@ -1,4 +1,4 @@
-from cook2ltl.domain import Connective, Label
+from cook2ltl.domain.recipe import Connective, Label
 from cook2ltl.parse import parse_recipe
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 

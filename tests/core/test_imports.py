@@ -24,13 +24,13 @@ def _imported(modules: str, watched: list[str]) -> list[str]:
 
 
 def test_cli_and_core_import_no_model_library():
-    assert _imported("cook2ltl.cli, cook2ltl.parse, cook2ltl.stack, cook2ltl.doctor, cook2ltl.models.provision",
+    assert _imported("cook2ltl.cli, cook2ltl.parse, cook2ltl.assembly.backends, cook2ltl.assembly.doctor, cook2ltl.assembly.provision",
                      HEAVY) == []
 
 
 def test_the_command_line_loads_a_headless_command_only_when_it_runs():
     """`cook2ltl app` starts without the pipeline, the library or the LTL parser; `--help` still lists them all."""
-    assert _imported("cook2ltl.cli", ["cook2ltl.pipeline", "cook2ltl.library", "cook2ltl.ltl", "sqlite_utils",
+    assert _imported("cook2ltl.cli", ["cook2ltl.pipeline.translator", "cook2ltl.library", "cook2ltl.ltl", "sqlite_utils",
                                       "cook2ltl.cli.translate_command", "cook2ltl.cli.bench_command"]) == []
     from typer.testing import CliRunner
 
@@ -44,8 +44,8 @@ def test_the_command_line_loads_a_headless_command_only_when_it_runs():
 
 
 def test_the_pipeline_library_and_kitchen_load_without_the_app():
-    core = ("cook2ltl.pipeline, cook2ltl.library, cook2ltl.kitchen.trial, cook2ltl.kitchen.planning, "
-            "cook2ltl.translate.serialize, cook2ltl.ltl")
+    core = ("cook2ltl.pipeline.translator, cook2ltl.library, cook2ltl.assembly.trial, cook2ltl.assembly.planning, "
+            "cook2ltl.pipeline.serialize, cook2ltl.ltl")
     assert _imported(core, ["textual", "cook2ltl.ui"]) == []
 
 

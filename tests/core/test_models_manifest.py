@@ -3,8 +3,8 @@ import hashlib
 import pytest
 
 from cook2ltl.errors import UserError
-from cook2ltl.models import provision as provisioning
-from cook2ltl.models.manifest import (
+from cook2ltl.assembly import provision as provisioning
+from cook2ltl.assembly.manifest import (
     STAMP, ModelEntry, Source, State, checkpoint_digest, load_manifest, state_of,
 )
 
@@ -66,7 +66,7 @@ def test_a_fetch_that_gives_the_wrong_bytes_is_an_error(cache, monkeypatch):
 def test_a_trained_checkpoint_without_stamp_is_missing_and_a_changed_one_corrupt(cache, monkeypatch):
     entry = ModelEntry(name="ner", role="test", source=Source.TRAIN, licence="MIT", data="training")
     folder = cache / "ner-abc"
-    monkeypatch.setattr("cook2ltl.models.manifest.trained_path", lambda _: folder)
+    monkeypatch.setattr("cook2ltl.assembly.manifest.trained_path", lambda _: folder)
     folder.mkdir(parents=True)
     (folder / "model.safetensors").write_bytes(b"weights")
     assert state_of(entry) == State.MISSING  # an interrupted training is redone
@@ -96,13 +96,13 @@ def test_training_replaces_superseded_checkpoints_and_leaves_no_partial(cache, m
     (old / STAMP).write_text("digest")
 
     def fake_train(data, encoder_dir, output, config):
-        from cook2ltl.ner.train import TrainingProgress
+        from cook2ltl.parse.training.train import TrainingProgress
 
         output.mkdir(parents=True)
         (output / "weights").write_bytes(b"trained")
         yield TrainingProgress(epoch=1, step=1, total_steps=1, loss=0.5, elapsed=0.1)
 
-    monkeypatch.setattr("cook2ltl.ner.train.train", fake_train)
+    monkeypatch.setattr("cook2ltl.parse.training.train.train", fake_train)
     events = list(provisioning._train(entry))
     assert events[-1].done == 1 and "epoch 1" in events[-1].message
     assert (cache / "ner-new" / "weights").exists() and (cache / "ner-new" / STAMP).exists()

@@ -2,13 +2,14 @@ from pathlib import Path
 
 import pytest
 
-from cook2ltl.domain import Label, Span
+from cook2ltl.domain.recipe import Label, Span
 from cook2ltl.errors import UserError
-from cook2ltl.ner.brat import read_recipe
-from cook2ltl.ner.evaluate import strict_f1
-from cook2ltl.ner.examples import is_validation, to_gliner, SentenceExample
-from cook2ltl.settings import Settings, load_settings
-from cook2ltl.stack import span_extractor
+from cook2ltl.parse.training.brat import read_recipe
+from cook2ltl.parse.training.evaluate import strict_f1
+from cook2ltl.parse.training.examples import is_validation, to_gliner, SentenceExample
+from cook2ltl.domain.settings import Settings
+from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.assembly.backends import span_extractor
 
 
 def test_settings_read_a_lab_checkpoint_and_its_label_names(tmp_path):
@@ -48,7 +49,7 @@ def test_bad_settings_are_user_errors(tmp_path, content):
 def test_a_lab_checkpoint_needs_names_for_every_category(tmp_path):
     checkpoint = tmp_path / "gliner-lab"
     checkpoint.mkdir()
-    from cook2ltl.settings import NerSettings
+    from cook2ltl.domain.settings import NerSettings
 
     with pytest.raises(UserError, match="No label names"):
         span_extractor(Settings(ner=NerSettings(checkpoint=checkpoint, labels={Label.VERB: "action"})))

@@ -3,7 +3,7 @@
 import subprocess
 import sys
 
-from cook2ltl.models.manifest import load_manifest
+from cook2ltl.assembly.manifest import load_manifest
 
 
 def cook2ltl(*arguments: str, **options) -> subprocess.CompletedProcess:

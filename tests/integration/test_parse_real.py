@@ -6,7 +6,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from cook2ltl.domain import Label
+from cook2ltl.domain.recipe import Label
 from cook2ltl.parse import parse_recipe
 
 DATA = Path(__file__).parents[1] / "data" / "eval_recipes_50.csv"

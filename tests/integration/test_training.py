@@ -4,8 +4,8 @@ import shutil
 from dataclasses import replace
 from pathlib import Path
 
-from cook2ltl.models.manifest import load_manifest, model_path
-from cook2ltl.ner.train import TrainConfig, train
+from cook2ltl.assembly.manifest import load_manifest, model_path
+from cook2ltl.parse.training.train import TrainConfig, train
 from cook2ltl.paths import models_dir
 
 from tests.models_required import require_models

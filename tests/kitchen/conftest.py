@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import pytest
 
-from cook2ltl.kitchen import rules
-from cook2ltl.kitchen.scenes import load_scene
-from cook2ltl.kitchen.state import KitchenState, Thing
+from cook2ltl.simulator import rules
+from cook2ltl.simulator.scenes import load_scene
+from cook2ltl.simulator.state import KitchenState, Thing
 
 
 class Bench:

@@ -2,8 +2,9 @@
 
 import pytest
 
-from cook2ltl.kitchen.scenes import UnknownScene, canonical_scene, load_scene, load_type_rules, scene_names
-from cook2ltl.kitchen.state import ancestors
+from cook2ltl.simulator.scenes import UnknownScene, canonical_scene, load_scene, scene_names
+from cook2ltl.thor_types import load_type_rules
+from cook2ltl.simulator.state import ancestors
 
 
 def test_teleport_and_teleport_full(bench):
@@ -70,7 +71,7 @@ def test_scene_names_are_normalised_and_checked():
 
 
 def test_a_name_no_type_has_stands_for_its_head_noun():
-    from cook2ltl.kitchen.names import types_for
+    from cook2ltl.world.thor_names import types_for
 
     assert types_for("dirty_plate", {"Plate", "Mug"}) == ("Plate",)
     assert types_for("wine_bottle", {"WineBottle", "Bottle"}) == ("WineBottle",)  # the whole name first

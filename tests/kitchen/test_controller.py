@@ -10,7 +10,7 @@ pytest.importorskip("ai2thor")
 
 from ai2thor.controller import Controller  # noqa: E402
 
-from cook2ltl.kitchen.launcher import embedded_executable, start_embedded  # noqa: E402
+from cook2ltl.execution.launcher import embedded_executable, start_embedded  # noqa: E402
 
 FRIDGE = "Fridge|-02.10|+00.00|+01.07"
 MICROWAVE = "Microwave|-00.24|+01.69|-02.53"

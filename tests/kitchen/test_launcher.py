@@ -9,14 +9,14 @@ import pytest
 
 pytest.importorskip("ai2thor")
 
-from cook2ltl.kitchen.launcher import (  # noqa: E402
+from cook2ltl.execution.launcher import (  # noqa: E402
     KitchenUnavailable,
     ThorBuild,
     find_thor_build,
     start_kitchen,
     start_thor,
 )
-from cook2ltl.kitchen.scenes import UnknownScene  # noqa: E402
+from cook2ltl.simulator.scenes import UnknownScene  # noqa: E402
 
 COMMIT = "f0825767cd50d69f666c7f282e54abfe58f1e917"
 

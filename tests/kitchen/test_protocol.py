@@ -12,9 +12,9 @@ import time
 import msgpack
 import pytest
 
-from cook2ltl.kitchen import protocol, rules
-from cook2ltl.kitchen.player import _answer, screen_size
-from cook2ltl.kitchen.session import Session
+from cook2ltl.simulator import protocol, rules
+from cook2ltl.simulator.player import _answer, screen_size
+from cook2ltl.simulator.session import Session
 
 
 def action_bytes(action: dict) -> bytes:
@@ -125,7 +125,7 @@ def test_the_player_ends_when_its_controller_dies(tmp_path):
         import os, subprocess, sys, time
         env = dict(os.environ, AI2THOR_FIFO_SERVER_PIPE_PATH={str(tmp_path / "server.pipe")!r},
                    AI2THOR_FIFO_CLIENT_PIPE_PATH={str(tmp_path / "client.pipe")!r})
-        player = subprocess.Popen([sys.executable, "-m", "cook2ltl.kitchen.player"], env=env)
+        player = subprocess.Popen([sys.executable, "-m", "cook2ltl.simulator.player"], env=env)
         open({str(pid_file)!r}, "w").write(str(player.pid))
         time.sleep(2)  # let the player start and block before its parent goes
         """

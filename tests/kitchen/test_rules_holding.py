@@ -1,7 +1,7 @@
 """Picking up, putting down and dropping: THOR's one-object hand and receptacle rules."""
 
-from cook2ltl.kitchen import rules
-from cook2ltl.kitchen.metadata import objects_metadata
+from cook2ltl.simulator import rules
+from cook2ltl.simulator.metadata import objects_metadata
 
 FRIDGE = "Fridge|-02.10|+00.00|+01.07"
 EGG_IN_FRIDGE = "Egg|-02.04|+00.81|+01.24"

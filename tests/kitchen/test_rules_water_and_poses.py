@@ -6,7 +6,7 @@ from dataclasses import replace
 
 import pytest
 
-from cook2ltl.kitchen.agent import REACH
+from cook2ltl.simulator.agent import REACH
 
 FAUCET = "Faucet|-02.15|+00.91|-01.50"
 BASIN = "Sink|-01.90|+00.97|-01.50|SinkBasin"

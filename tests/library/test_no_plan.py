@@ -13,8 +13,9 @@ from cook2ltl.errors import UserError
 from cook2ltl.library import Library, Status
 from cook2ltl.library.exchange import export_library, import_library
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import NO_PLAN_PROBLEM, Finished, Translator, translate
-from cook2ltl.reduce.model import Source
+from cook2ltl.pipeline.translator import NO_PLAN_PROBLEM, Translator, translate
+from cook2ltl.pipeline.records import Finished
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.validation import Validation
 from tests.fakes import ScriptedDependencies, ScriptedSpans

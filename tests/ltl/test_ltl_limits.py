@@ -162,7 +162,7 @@ def test_patterns_with_thousands_of_elements():
 
 
 def test_rollout_walks_and_progresses_huge_and_deep_formulas():
-    from cook2ltl.kitchen.rollout import choose, in_order
+    from cook2ltl.execution.rollout import choose, in_order
 
     pick = Atom("pick_up", ("apple",))
     deep = parse("F" * 2000 + "pick_up(apple)")

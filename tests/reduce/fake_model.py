@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from cook2ltl.reduce.llm import Completion
-from cook2ltl.reduce.model import Usage
+from cook2ltl.domain.actions import Usage
 
 
 @dataclass

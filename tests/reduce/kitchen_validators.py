@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.reduce.validation import KitchenValidator
+from cook2ltl.execution.kitchen_check import KitchenValidator
 
 
 @pytest.fixture(scope="module")

@@ -2,11 +2,11 @@
 
 import pytest
 
-from cook2ltl.models.manifest import State, load_manifest, model_path, state_of
+from cook2ltl.assembly.manifest import State, load_manifest, model_path, state_of
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.grammar import admits, vocabulary
 from cook2ltl.reduce.llm import LlamaModel
-from cook2ltl.reduce.model import Action
+from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 

@@ -5,7 +5,7 @@ import pytest
 from cook2ltl import paths
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.action import parameter
-from cook2ltl.reduce.model import Action
+from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.prompt import build_prompt, example_functions, header
 

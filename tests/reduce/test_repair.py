@@ -6,9 +6,10 @@ from cook2ltl.errors import UserError
 from cook2ltl.library import Library
 from cook2ltl.library.store import Status
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Finished, Translator, translate
-from cook2ltl.translate.rates import rates
-from cook2ltl.reduce.model import Source
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Finished
+from cook2ltl.pipeline.rates import rates
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel

@@ -7,9 +7,9 @@ import pytest
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.body import read_body
-from cook2ltl.reduce.model import Action, PrimitiveSet, Primitive
+from cook2ltl.domain.actions import Action, PrimitiveSet, Primitive
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.reduce.validation import KitchenValidator, unsupported
+from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
 from tests.reduce.kitchen_validators import validators  # noqa: F401  (a fixture)
 
 MICROWAVE = "open(microwave)\npick_up(potato)\nput(potato, microwave)\nclose(microwave)\nturn_on(microwave)\nwait(potato == hot)"

@@ -10,7 +10,7 @@ from typing import Sequence
 
 from hypothesis import HealthCheck, settings, strategies as st
 
-from cook2ltl.domain import Label, Span
+from cook2ltl.domain.recipe import Label, Span
 
 # How many inputs each property test tried; printed at the end of the run for the report (see conftest).
 TRIED: Counter[str] = Counter()

@@ -35,12 +35,12 @@ def services(tmp_path, monkeypatch) -> Services:
     monkeypatch.delenv("COOK2LTL_THOR_EXECUTABLE", raising=False)
 
     def validator(primitives):
-        from cook2ltl.reduce.validation import KitchenValidator
+        from cook2ltl.execution.kitchen_check import KitchenValidator
 
         return KitchenValidator(primitives)
 
     def kitchen(scene):
-        from cook2ltl.kitchen.launcher import start_embedded
+        from cook2ltl.execution.launcher import start_embedded
 
         return start_embedded(scene)
 
@@ -73,7 +73,7 @@ async def test_the_app_translates_while_the_cli_reviews_the_same_library(service
     for code, output in results:
         assert code == 0 and "Traceback" not in output, output
     services.close()  # what the app does on quitting: its kitchen (of the kitchen check) ends with it
-    kitchens = {pid for pid in children(os.getpid()) if "cook2ltl.kitchen" in command_line(pid)}
+    kitchens = {pid for pid in children(os.getpid()) if "cook2ltl.execution.launcher" in command_line(pid)}
     assert wait_until_gone(kitchens, timeout=10) == set()
     store = Library(services.library_path)
     try:

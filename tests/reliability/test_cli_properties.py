@@ -23,10 +23,10 @@ CLI = settings(max_examples=150, deadline=None,
 @pytest.fixture(scope="module")
 def fake_backends():
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr("cook2ltl.stack.span_extractor", lambda settings: WordSpans())
-        patch.setattr("cook2ltl.stack.dependency_parser", lambda: ScriptedDependencies())
+        patch.setattr("cook2ltl.assembly.backends.span_extractor", lambda settings: WordSpans())
+        patch.setattr("cook2ltl.assembly.backends.dependency_parser", lambda: ScriptedDependencies())
         # Answers with a line for "boil", hostile text reaches the prompt of every other verb.
-        patch.setattr("cook2ltl.reduce.llm.load_model", lambda name: ScriptedModel({"boil": "pick_up(pot)"}))
+        patch.setattr("cook2ltl.assembly.backends.load_model", lambda name: ScriptedModel({"boil": "pick_up(pot)"}))
         yield
 
 

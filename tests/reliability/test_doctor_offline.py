@@ -5,7 +5,7 @@ import json
 import pytest
 
 from cook2ltl import offline, paths
-from cook2ltl.doctor import network_checks
+from cook2ltl.assembly.doctor import network_checks
 
 
 @pytest.fixture

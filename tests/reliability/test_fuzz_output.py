@@ -17,7 +17,7 @@ from rich.text import Text
 
 from cook2ltl.reduce.grammar import to_gbnf, vocabulary
 from cook2ltl.reduce.llm import line_grammar
-from cook2ltl.reduce.model import Action, Parameter
+from cook2ltl.domain.actions import Action, Parameter
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.text_safety import json_text, literal, styled, terminal, visible
 from cook2ltl.ui.literal import shown

@@ -10,12 +10,13 @@ leave every grammar exactly as narrow as without them."""
 import pytest
 
 from cook2ltl.library import Library
-from cook2ltl.models.manifest import load_manifest, model_path
-from cook2ltl.pipeline import ActionDone, Finished, Translator, Variant, run
+from cook2ltl.assembly.manifest import load_manifest, model_path
+from cook2ltl.pipeline.translator import Translator, run
+from cook2ltl.pipeline.records import ActionDone, Finished, Variant
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.grammar import admits, vocabulary
 from cook2ltl.reduce.llm import LlamaModel
-from cook2ltl.reduce.model import Source
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.text_safety import visible
 from tests.fakes import ScriptedDependencies, ScriptedSpans
@@ -156,9 +157,9 @@ def test_translate_reuses_hostile_entries_and_offers_no_hostile_verb(hostile, mo
     model = ScriptedModel({"mash": "stir(potatoes)"})
     spans = {"Boil the eggs.": [("VERB", "Boil"), ("WHAT", "the eggs")],
              "Mash the potatoes.": [("VERB", "Mash"), ("WHAT", "the potatoes")]}
-    monkeypatch.setattr("cook2ltl.stack.span_extractor", lambda settings: ScriptedSpans(spans))
-    monkeypatch.setattr("cook2ltl.stack.dependency_parser", lambda: ScriptedDependencies())
-    monkeypatch.setattr("cook2ltl.reduce.llm.load_model", lambda name: model)
+    monkeypatch.setattr("cook2ltl.assembly.backends.span_extractor", lambda settings: ScriptedSpans(spans))
+    monkeypatch.setattr("cook2ltl.assembly.backends.dependency_parser", lambda: ScriptedDependencies())
+    monkeypatch.setattr("cook2ltl.assembly.backends.load_model", lambda name: model)
     recipe = hostile.parent / "recipe.txt"
     recipe.write_text("Boil the eggs. Mash the potatoes.", encoding="utf-8")
     code, out, err = run_cli("translate", str(recipe), "--library", str(hostile), "--no-validate", "--no-ground")

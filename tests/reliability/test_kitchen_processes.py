@@ -11,13 +11,15 @@ import time
 import pytest
 
 from cook2ltl.errors import UserError
-from cook2ltl.kitchen.launcher import KitchenUnavailable, start_embedded
-from cook2ltl.kitchen.tasks import find_task, reference_formula
-from cook2ltl.kitchen.trial import TrialDone, run_trial
+from cook2ltl.execution.launcher import start_embedded
+from cook2ltl.execution.unavailable import KitchenUnavailable
+from cook2ltl.execution.tasks import find_task
+from cook2ltl.assembly.trial import reference_formula
+from cook2ltl.assembly.trial import TrialDone, run_trial
 from tests.reliability.processes import adopting_orphans, children, command_line, wait_until_gone
 
 pytest.importorskip("ai2thor")
-PLAYER = "cook2ltl.kitchen"  # the embedded player: `python -c "from cook2ltl.kitchen.launcher import run_player …"`
+PLAYER = "cook2ltl.execution.launcher"  # the embedded player: `python -c "from cook2ltl.execution.launcher import run_player …"`
 
 
 @pytest.fixture

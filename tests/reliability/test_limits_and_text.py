@@ -2,11 +2,12 @@
 
 import pytest
 
-from cook2ltl.cli.inputs import read_recipe
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.errors import UserError
 from cook2ltl.parse import parse_recipe
 from cook2ltl.preprocess import visible_text
-from cook2ltl.settings import Limits, load_settings
+from cook2ltl.domain.settings import Limits
+from cook2ltl.domain.settings_file import load_settings
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 
 SMALL = Limits(recipe_bytes=1000, steps=5)
@@ -98,7 +99,7 @@ def test_a_settings_path_that_is_a_folder_is_a_clear_error(tmp_path):
 
 
 def test_a_models_folder_that_is_a_file_is_a_clear_error(tmp_path):
-    from cook2ltl.models.manifest import load_manifest
+    from cook2ltl.assembly.manifest import load_manifest
 
     (tmp_path / "models").write_text("not a folder")
     with pytest.raises(UserError):

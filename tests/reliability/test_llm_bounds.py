@@ -5,10 +5,10 @@ import time
 
 import pytest
 
-from cook2ltl.models.manifest import State, load_manifest, model_path, state_of
+from cook2ltl.assembly.manifest import State, load_manifest, model_path, state_of
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.llm import GenerationCancelled, GenerationStopped, LlamaModel
-from cook2ltl.reduce.model import Action
+from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 
@@ -67,7 +67,8 @@ def test_within_the_limits_a_reduction_still_completes(tiny):
 
 
 def test_the_time_limit_comes_from_the_settings(tmp_path, monkeypatch):
-    from cook2ltl.reduce.llm import DEFAULT_TIME_LIMIT, load_model
+    from cook2ltl.assembly.backends import load_model
+    from cook2ltl.reduce.llm import DEFAULT_TIME_LIMIT
 
     monkeypatch.setenv("COOK2LTL_CONFIG", str(tmp_path / "config.toml"))
     assert load_model(TINY).time_limit == DEFAULT_TIME_LIMIT

@@ -10,8 +10,9 @@ import pytest
 from cook2ltl import paths
 from cook2ltl.library import Library
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Finished, Translator, translate
-from cook2ltl.reduce.model import Source
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Finished
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
@@ -30,7 +31,7 @@ FORBIDDEN = {
     "trust_remote_code": re.compile(r"trust_remote_code\s*=\s*True"),
 }
 # The only modules that start programs, each with a fixed argument list (no user text reaches them as code).
-SUBPROCESS_USERS = {"models/provision.py", "bench/micro.py", "bench/results.py", "bench/fuzz.py"}
+SUBPROCESS_USERS = {"assembly/provision.py", "bench/micro.py", "bench/results.py", "bench/fuzz.py"}
 
 
 def sources():

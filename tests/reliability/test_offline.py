@@ -106,7 +106,7 @@ def test_the_textual_app_sets_the_offline_variables_before_it_starts():
 
 def test_the_embedded_kitchen_player_is_guarded_too():
     result = run_python(
-        "import socket\nfrom cook2ltl.kitchen import launcher, player\n"
+        "import socket\nfrom cook2ltl.execution import launcher\nfrom cook2ltl.simulator import player\n"
         "player.main = lambda: socket.create_connection(('example.org', 80), timeout=1)\n"
         "launcher.run_player()\n")
     assert "refused a network connection to example.org" in result.stderr and result.returncode != 0

@@ -9,9 +9,10 @@ from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Finished, Translator, translate
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Finished
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.settings import Limits
+from cook2ltl.domain.settings import Limits
 from tests.fakes import ScriptedDependencies
 from tests.reduce.fake_model import ScriptedModel
 from tests.reliability.hostile import HAND_MADE, TRIED, WordSpans, hostile_text

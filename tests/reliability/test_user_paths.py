@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from cook2ltl import paths
-from cook2ltl.cli.inputs import read_recipe
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.cli.recipe_rollout import is_recipe
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.primitives import load_primitives
@@ -115,7 +115,8 @@ def test_the_kitchens_paths_from_the_environment_are_checked_too(monkeypatch):
     """$COOK2LTL_ASSETS as the kitchens read it, $COOK2LTL_THOR_EXECUTABLE and $COOK2LTL_KITCHEN_CACHE: a path
     too long or holding raw bytes is a clear refusal, never a traceback."""
     from cook2ltl.errors import UserError
-    from cook2ltl.kitchen import launcher, scenes
+    from cook2ltl.execution import launcher
+    from cook2ltl.simulator import scenes
 
     long = "/" + "x" * 300
     monkeypatch.setenv("COOK2LTL_ASSETS", long)

@@ -10,7 +10,7 @@ pytest.importorskip("ai2thor")
 
 @pytest.fixture(scope="module")
 def controller(thor_home):
-    from cook2ltl.kitchen.launcher import start_embedded
+    from cook2ltl.execution.launcher import start_embedded
 
     started = start_embedded("FloorPlan1")
     yield started

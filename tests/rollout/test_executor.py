@@ -4,9 +4,9 @@ atoms to THOR actions, names to objectIds, the trace fed to LTL progression, and
 import pytest
 
 from cook2ltl.errors import UserError
-from cook2ltl.kitchen.facts import PREDICATES
-from cook2ltl.kitchen.names import Binding, UnknownObject, resolve
-from cook2ltl.kitchen.rollout import ARITY, ActionRefused, Finished, Limits, Started, Stop, rollout
+from cook2ltl.world.thor_facts import PREDICATES
+from cook2ltl.world.thor_names import Binding, UnknownObject, resolve
+from cook2ltl.execution.rollout import ARITY, ActionRefused, Finished, Limits, Started, Stop, rollout
 from cook2ltl.ltl import Atom, Verdict, monitor, parse, to_spot
 from cook2ltl.reduce.primitives import load_primitives
 

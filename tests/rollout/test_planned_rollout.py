@@ -9,14 +9,15 @@ from typer.testing import CliRunner
 
 from cook2ltl import paths
 from cook2ltl.cli import app
-from cook2ltl.kitchen import launcher, planning
-from cook2ltl.kitchen.launcher import KitchenUnavailable
-from cook2ltl.kitchen.names import UnknownObject
-from cook2ltl.kitchen.planning import Planner
-from cook2ltl.kitchen.tasks import find_task
-from cook2ltl.kitchen.trial import run_trial
+from cook2ltl.assembly import planning
+from cook2ltl.execution import launcher
+from cook2ltl.execution.unavailable import KitchenUnavailable
+from cook2ltl.world.thor_names import UnknownObject
+from cook2ltl.assembly.planning import Planner
+from cook2ltl.execution.tasks import find_task
+from cook2ltl.assembly.trial import run_trial
 from cook2ltl.library import Library
-from cook2ltl.pipeline import Translator
+from cook2ltl.pipeline.translator import Translator
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.models_required import require_models

@@ -9,10 +9,11 @@ from typer.testing import CliRunner
 from cook2ltl.library import Library
 from cook2ltl.ltl import parse
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import ActionDone, Finished, Parsed, Started, StepDone, Translator, Variant, run, translate
-from cook2ltl.reduce.model import Source
+from cook2ltl.pipeline.translator import Translator, run, translate
+from cook2ltl.pipeline.records import ActionDone, Finished, Parsed, Started, StepDone, Variant
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.translate.serialize import translation_json
+from cook2ltl.pipeline.serialize import translation_json
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
 
@@ -136,14 +137,13 @@ def test_json_has_spot_formulas_and_stats(library):
 
 
 def test_the_translate_command(monkeypatch, tmp_path):
-    import cook2ltl.reduce.llm
-    import cook2ltl.stack
+    import cook2ltl.assembly.backends
     from cook2ltl.cli import app
 
-    monkeypatch.setattr(cook2ltl.stack, "span_extractor", lambda settings: ScriptedSpans(SPANS))
-    monkeypatch.setattr(cook2ltl.stack, "dependency_parser", lambda: ScriptedDependencies())
+    monkeypatch.setattr(cook2ltl.assembly.backends, "span_extractor", lambda settings: ScriptedSpans(SPANS))
+    monkeypatch.setattr(cook2ltl.assembly.backends, "dependency_parser", lambda: ScriptedDependencies())
     models = []
-    monkeypatch.setattr(cook2ltl.reduce.llm, "load_model",
+    monkeypatch.setattr(cook2ltl.assembly.backends, "load_model",
                         lambda name: models.append(ScriptedModel({"boil": BOIL, "mash": MASH})) or models[-1])
     monkeypatch.setenv("COOK2LTL_LIBRARY", str(tmp_path / "library.sqlite"))
     monkeypatch.setenv("COOK2LTL_CONFIG", str(tmp_path / "none.toml"))

@@ -4,11 +4,12 @@ import pytest
 
 from cook2ltl.library import Library
 from cook2ltl.ltl import to_spot
-from cook2ltl.models.manifest import State, load_manifest, state_of
+from cook2ltl.assembly.manifest import State, load_manifest, state_of
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Finished, Translator, translate
-from cook2ltl.reduce.llm import DEFAULT_MODEL, load_model
-from cook2ltl.reduce.model import Source
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Finished
+from cook2ltl.assembly.backends import DEFAULT_MODEL, load_model
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings
 from tests.fakes import ScriptedDependencies, ScriptedSpans

@@ -23,13 +23,12 @@ ANSWERS = {
 @pytest.fixture
 def cli(monkeypatch, tmp_path):
     pytest.importorskip("ai2thor")
-    import cook2ltl.reduce.llm
-    import cook2ltl.stack
+    import cook2ltl.assembly.backends
     from cook2ltl.cli import app
 
-    monkeypatch.setattr(cook2ltl.stack, "span_extractor", lambda settings: ScriptedSpans(SPANS))
-    monkeypatch.setattr(cook2ltl.stack, "dependency_parser", lambda: ScriptedDependencies())
-    monkeypatch.setattr(cook2ltl.reduce.llm, "load_model", lambda name: ScriptedModel(ANSWERS))
+    monkeypatch.setattr(cook2ltl.assembly.backends, "span_extractor", lambda settings: ScriptedSpans(SPANS))
+    monkeypatch.setattr(cook2ltl.assembly.backends, "dependency_parser", lambda: ScriptedDependencies())
+    monkeypatch.setattr(cook2ltl.assembly.backends, "load_model", lambda name: ScriptedModel(ANSWERS))
     monkeypatch.setenv("COOK2LTL_CONFIG", str(tmp_path / "none.toml"))
     monkeypatch.setenv("HOME", str(tmp_path))
     monkeypatch.setenv("COOK2LTL_KITCHEN_CACHE", str(tmp_path / "cache"))

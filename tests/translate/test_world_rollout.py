@@ -12,10 +12,11 @@ import pytest
 from cook2ltl.errors import UserError
 from cook2ltl.ltl.ast import TRUE, Atom
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline import Translator, Variant, translate
-from cook2ltl.reduce.model import Call
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Variant
+from cook2ltl.domain.actions import Call
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.translate.world_rollout import (
+from cook2ltl.pipeline.world_rollout import (
     ActionRolled, Began, Finished, StepRolled, recipe_rollout_json, roll_out_recipe,
 )
 from cook2ltl.world.kitchens import grounding

@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from cook2ltl.settings import TranslateSettings
+from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.ui.app import Cook2LTLApp
 from cook2ltl.ui.services import Services
 from tests.fakes import ScriptedDependencies, ScriptedSpans
@@ -64,12 +64,12 @@ def model() -> ScriptedModel:
 @pytest.fixture
 def services(sandbox, model) -> Services:
     def kitchen(scene: str):
-        from cook2ltl.kitchen.launcher import start_embedded
+        from cook2ltl.execution.launcher import start_embedded
 
         return start_embedded(scene)
 
     def validator(primitives):
-        from cook2ltl.reduce.validation import KitchenValidator
+        from cook2ltl.execution.kitchen_check import KitchenValidator
 
         return KitchenValidator(primitives)
 

@@ -20,11 +20,11 @@ FROZEN = SimpleNamespace(perf_counter=lambda: 0.0)
 
 @pytest.fixture
 def frozen_clocks(monkeypatch):
-    import cook2ltl.kitchen.rollout
-    import cook2ltl.pipeline
+    import cook2ltl.execution.rollout
+    import cook2ltl.pipeline.translator
 
-    monkeypatch.setattr(cook2ltl.pipeline, "time", FROZEN)
-    monkeypatch.setattr(cook2ltl.kitchen.rollout, "time", FROZEN)
+    monkeypatch.setattr(cook2ltl.pipeline.translator, "time", FROZEN)
+    monkeypatch.setattr(cook2ltl.execution.rollout, "time", FROZEN)
 
 
 async def steady_cursor(pilot) -> None:

@@ -232,7 +232,7 @@ async def test_lab_mode_reuses_approved_entries_only(make_app, model, services):
 
 async def test_a_labs_primitive_set_and_repairs_come_from_the_settings(make_app, model, services, tmp_path):
     from cook2ltl import paths
-    from cook2ltl.settings import TranslateSettings
+    from cook2ltl.domain.settings import TranslateSettings
 
     recipe_set = (paths.assets_dir() / "primitives" / "recipe.toml").read_text()
     examples = paths.assets_dir() / "prompts" / "recipe.txt"

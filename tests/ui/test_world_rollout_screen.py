@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from textual.widgets import Input, Select
 
-from cook2ltl.settings import TranslateSettings
+from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.ui.messages import (
     RecipeActionRolled, RecipeRolloutBegan, RecipeRolloutDone, RecipeStepRolled,
 )

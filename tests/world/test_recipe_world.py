@@ -5,15 +5,14 @@ import random
 
 import pytest
 
-from cook2ltl.pipeline import Translator, translate
-from cook2ltl.reduce.model import Action, Call, Parameter
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.domain.actions import Action, Call, Parameter
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.world.affordances import admissible_calls
 from cook2ltl.world.check import PLANNER, check_plan
 from cook2ltl.world.effects import intended_effect, verb_table
 from cook2ltl.world.kitchens import grounding
 from cook2ltl.world.logic import applicable, successor
-from cook2ltl.world.pddl import read_with_unified_planning
 from cook2ltl.world.planner import build_problem
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
@@ -136,7 +135,7 @@ def test_a_recipe_runs_in_one_state_and_lines_are_chosen_among_those_the_world_a
 
     model = ScriptedModel({"preheat": "pick_up(oven)\nturn_on(oven)\nwait(oven == hot)",
                            "bake": "open(oven)\npick_up(cake)\nput(cake, oven)"})
-    translator = Translator(PRIMITIVES, model, None, grounding=kitchen, variant=__import__("cook2ltl.pipeline").pipeline.Variant.AR)
+    translator = Translator(PRIMITIVES, model, None, grounding=kitchen, variant=__import__("cook2ltl.pipeline.translator").pipeline.Variant.AR)
     events = list(translate(parse_recipe(RECIPE, ScriptedSpans(SPANS), ScriptedDependencies()), translator))
     steps = events[-1].translation.steps
     preheat, bake = steps[0].actions[0], steps[1].actions[0]
@@ -164,7 +163,7 @@ def test_lines_the_effect_does_not_need_are_dropped_and_tidying_ones_kept(kitche
 
 def test_an_action_the_recipe_forbids_is_checked_but_leaves_the_kitchen_as_it_was(kitchen):
     from cook2ltl.parse import parse_recipe
-    from cook2ltl.pipeline import Variant
+    from cook2ltl.pipeline.records import Variant
 
     text = "Do not preheat the oven. Bake the cake."
     spans = {"Do not preheat the oven.": [("VERB", "preheat"), ("WHAT", "the oven")], **SPANS}
@@ -179,8 +178,8 @@ def test_an_action_the_recipe_forbids_is_checked_but_leaves_the_kitchen_as_it_wa
 def test_an_action_whose_effect_already_holds_needs_no_plan_and_teaches_nothing(kitchen, tmp_path):
     from cook2ltl.library.store import Library
     from cook2ltl.parse import parse_recipe
-    from cook2ltl.pipeline import Variant
-    from cook2ltl.reduce.model import Source
+    from cook2ltl.pipeline.records import Variant
+    from cook2ltl.domain.actions import Source
 
     text = "Preheat the oven. Heat the oven."
     spans = {"Preheat the oven.": SPANS["Preheat the oven."], "Heat the oven.": [("VERB", "Heat"), ("WHAT", "the oven")]}

@@ -1,7 +1,7 @@
 """The span model (GLiNER) against the paper's own method, a spaCy NER, on the same split and the same score.
 
-Both learn from the recipes of brat-dev that are not held out (cook2ltl.ner.examples: every fifth recipe is
-validation) and are scored with the strict span F1 of cook2ltl.ner.evaluate on the held-out sentences. The
+Both learn from the recipes of brat-dev that are not held out (cook2ltl.parse.training.examples: every fifth recipe is
+validation) and are scored with the strict span F1 of cook2ltl.parse.training.evaluate on the held-out sentences. The
 spaCy baseline is a blank English pipeline with spaCy's default NER (a CNN tok2vec and a transition-based
 parser), trained on the CPU for a fixed number of epochs, seeded, and kept in the model cache so a rerun only
 evaluates it.
@@ -19,10 +19,10 @@ from pathlib import Path
 
 from cook2ltl import paths
 from cook2ltl.bench.results import write
-from cook2ltl.domain import Label, Span
-from cook2ltl.ner.brat import read_corpus
-from cook2ltl.ner.evaluate import Report, strict_f1
-from cook2ltl.ner.examples import SentenceExample, is_validation, sentence_examples
+from cook2ltl.domain.recipe import Label, Span
+from cook2ltl.parse.training.brat import read_corpus
+from cook2ltl.parse.training.evaluate import Report, strict_f1
+from cook2ltl.parse.training.examples import SentenceExample, is_validation, sentence_examples
 
 # The paper's names for the categories.
 HEADINGS = {"VERB": "Verb", "WHAT": "What?", "WHERE": "Where?", "HOW": "How?", "TIME": "Time", "TEMP": "Temperature"}
@@ -124,8 +124,8 @@ def report_json(report: Report, milliseconds: float) -> dict:
 
 def run_ner(smoke: bool, out: Path, echo: Callable[[str], None]) -> dict:
     from cook2ltl.bench.backends import parsers
-    from cook2ltl.models.manifest import load_manifest
-    from cook2ltl.stack import SPAN_MODEL
+    from cook2ltl.assembly.manifest import load_manifest
+    from cook2ltl.assembly.backends import SPAN_MODEL
 
     training, held_out = split(paths.models_dir() / load_manifest()[SPAN_MODEL].data)
     recipe = SpacyRecipe(epochs=1) if smoke else SpacyRecipe()

@@ -10,7 +10,7 @@ import re
 from collections import Counter
 from collections.abc import Iterable
 
-from cook2ltl.reduce.model import Source
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.validation import LineProblem
 
 SHOWN = 5  # kinds per variant under the table

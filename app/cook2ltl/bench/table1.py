@@ -12,7 +12,7 @@ own) decodes every new reduction against the recipe set's world model, where the
 the planner complete it; there the world model is the judge, so its row reports how many new reductions
 reach their intended effect, and how many lines the planner wrote.
 
-Every new reduction is run in the kitchen (cook2ltl.reduce.validation) without changing what is cached or
+Every new reduction is run in the kitchen (cook2ltl.execution.kitchen_check) without changing what is cached or
 which actions reach the model (no repairs, except in the repair variant): the validated rate is the share of
 new reductions whose plan the kitchen ran. Time is the translation's without those checks.
 
@@ -35,11 +35,13 @@ from pathlib import Path
 from cook2ltl import paths
 from cook2ltl.bench.refusals import refusals, refusals_note
 from cook2ltl.bench.results import pm, write
-from cook2ltl.domain import ParsedRecipe
+from cook2ltl.domain.recipe import ParsedRecipe
 from cook2ltl.errors import UserError
-from cook2ltl.pipeline import Finished, Translation, Translator, Variant, translate
-from cook2ltl.translate.rates import rates
-from cook2ltl.reduce.model import Source
+from cook2ltl.assembly.translators import TranslateOptions, build_translator
+from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Finished, Translation, Variant
+from cook2ltl.pipeline.rates import rates
+from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.validation import PlanValidator
 
 RECIPES_FILE = "eval_recipes_50.csv"
@@ -102,7 +104,7 @@ def library_bound(stage: Stage, primitives) -> dict:
     """What bounds AR+𝔸's calls: the library is keyed by verb and signature, so every distinct key among the
     actions that are not passed through as primitives costs at least one call, however good the model."""
     from cook2ltl.reduce.action import actions_of
-    from cook2ltl.translate.formula import direct_calls
+    from cook2ltl.formulas.formula import direct_calls
 
     actions = [a for recipe in stage.recipes for step in recipe.steps for frame in step.frames
                for a in actions_of(frame)]
@@ -187,7 +189,7 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
                echo: Callable[[str], None], seed: int = FIRST_SEED, primitive_set: str = "recipe") -> dict:
     """Table I with the real models, runs seeded `seed`, `seed` + 1, …; the record and table are rewritten
     after each recipe."""
-    from cook2ltl.reduce.llm import load_model
+    from cook2ltl.assembly.backends import load_model
     from cook2ltl.reduce.primitives import load_primitives
 
     check_variants(variants)
@@ -205,7 +207,7 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
     def report(rows: list[dict]) -> None:
         write(out, "table1", record | {"runs": rows}, table1_markdown(rows, len(recipes), record["library_bound"]))
 
-    from cook2ltl.reduce.validation import KitchenValidator
+    from cook2ltl.execution.kitchen_check import KitchenValidator
 
     with KitchenValidator(primitives) as validator:
         record["runs"] = measure(stage, model, primitives, validator, runs, variants, seed, report, echo)
@@ -240,11 +242,11 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                         approve_checked(grown)
                     variant = Variant(name) if name in ("AR", "AR*") else Variant.AR_LIBRARY
                     library = {REPAIR: fresh, WORLD: own}.get(name, grown if variant == Variant.AR_LIBRARY else None)
-                    translator = Translator(primitives, model, library, variant,
-                                            validator=None if name == WORLD and judged_by_world(primitives)
-                                            else validator,
-                                            repairs=REPAIRS if name == REPAIR else 0, approved_only=name == APPROVED,
-                                            grounding=world_grounding(primitives) if name == WORLD else None)
+                    # Every variant's new reductions run in the kitchen; the world variant's where the rule says.
+                    options = TranslateOptions(variant, check=None if name == WORLD else True,
+                                               repairs=REPAIRS if name == REPAIR else 0,
+                                               approved_only=name == APPROVED, ground=name == WORLD)
+                    translator = build_translator(primitives, model, library, options, lambda _: validator, echo)
                     head = {"variant": name, "model": model.name, "seed": run_seed}
                     rows.append(head | run_variant(run_stage, translator, lambda partial: report(rows + [head | partial])))
                     report(rows)
@@ -254,18 +256,6 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                 for library in (grown, fresh, own):
                     library.close()
     return rows
-
-
-def judged_by_world(primitives) -> bool:
-    """A set whose world has a kitchen of its own (the recipe set) is judged there, not by THOR stand-ins; the
-    AI2-THOR set's plans are still run in the kitchen."""
-    return primitives.world is not None and primitives.world.kitchen is not None
-
-
-def world_grounding(primitives):
-    from cook2ltl.world.kitchens import grounding
-
-    return grounding(primitives)
 
 
 def approve_checked(library) -> int:

@@ -20,7 +20,7 @@ from pathlib import Path
 
 from cook2ltl.bench.results import pm, write
 from cook2ltl.errors import UserError
-from cook2ltl.pipeline import Variant
+from cook2ltl.pipeline.records import Variant
 
 # Table II of the paper (gpt-3.5-turbo, 5 sets of 10 runs): successes of 10 and seconds, AR then AR+𝔸.
 PAPER = {
@@ -40,7 +40,7 @@ COLUMNS = {"AR": (Variant.AR, None, False), "AR+A": (Variant.AR_LIBRARY, None, F
 
 
 def choose_tasks(which: str):
-    from cook2ltl.kitchen.tasks import PARAPHRASES, load_tasks
+    from cook2ltl.execution.tasks import PARAPHRASES, load_tasks
 
     def set_of(task) -> str:
         if task.source.startswith("paper"):
@@ -56,8 +56,8 @@ def choose_tasks(which: str):
 
 def run_task(kitchen, planner, task) -> dict:
     """Plan the task's instruction, roll the plan out, check the goal."""
-    from cook2ltl.kitchen.tasks import set_up
-    from cook2ltl.kitchen.trial import TrialDone, explain, run_trial
+    from cook2ltl.execution.tasks import set_up
+    from cook2ltl.assembly.trial import TrialDone, explain, run_trial
 
     kitchen.reset(task.scene)
     set_up(kitchen, task)  # the world model starts from the kitchen as the task leaves it (a dirty mug)
@@ -81,13 +81,13 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
     """Every task `runs` consecutive times with one planner and one library; each run's outcome. With
     `repairs`, new plans are checked in the kitchen and repaired that many times at most."""
     from cook2ltl.bench.backends import parsers
-    from cook2ltl.kitchen.launcher import start_embedded
-    from cook2ltl.kitchen.planning import PRIMITIVES, Planner
+    from cook2ltl.execution.launcher import start_embedded
+    from cook2ltl.assembly.planning import PRIMITIVES, Planner
     from cook2ltl.library import Library
-    from cook2ltl.pipeline import Translator
-    from cook2ltl.reduce.llm import load_model
+    from cook2ltl.assembly.translators import TranslateOptions, build_translator
+    from cook2ltl.assembly.backends import load_model
     from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.reduce.validation import KitchenValidator
+    from cook2ltl.execution.kitchen_check import KitchenValidator
 
     results: dict[str, list[dict]] = {}
     started = time.perf_counter()
@@ -99,8 +99,9 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
     primitives = load_primitives(PRIMITIVES)
     with tempfile.TemporaryDirectory() as folder, KitchenValidator(primitives) as validator:
         library = Library(Path(folder) / "library.sqlite") if variant == Variant.AR_LIBRARY else None
-        translator = Translator(primitives, language_model, library, variant,
-                                validator=None if repairs is None else validator, repairs=repairs or 0)
+        # Without repairs the benchmark measures the plans as written: no kitchen check either.
+        options = TranslateOptions(variant, check=repairs is not None, repairs=repairs or 0, ground=False)
+        translator = build_translator(primitives, language_model, library, options, lambda _: validator, echo)
         planner = Planner(translator, backends.spans, backends.dependencies, ground)
         kitchen = start_embedded("FloorPlan1")
         try:

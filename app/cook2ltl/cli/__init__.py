@@ -73,7 +73,7 @@ def app_command(recipe: Optional[Path] = typer.Argument(None, show_default=False
 @app.command("doctor")
 def doctor_command() -> None:
     """Check the whole stack offline and say what is missing and the command that fixes it."""
-    from cook2ltl.doctor import run_checks
+    from cook2ltl.assembly.doctor import run_checks
 
     console = terminal()
     failures = 0

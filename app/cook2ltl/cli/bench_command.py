@@ -47,7 +47,7 @@ def bench_command(
 ) -> None:
     """Measure and write bench/results/<name>.json and .md (a benchmark, not a test: it takes long)."""
     from cook2ltl import paths
-    from cook2ltl.reduce.llm import DEFAULT_MODEL
+    from cook2ltl.assembly.backends import DEFAULT_MODEL
 
     console = terminal(stderr=True)
     echo = lambda text: console.print(text, highlight=False, soft_wrap=True)  # noqa: E731

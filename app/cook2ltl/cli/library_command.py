@@ -7,7 +7,6 @@ run in the embedded kitchen before it is stored, an edited intended effect is ch
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Optional
 
@@ -223,7 +222,7 @@ def _primitive_set(choice: str, name: str):
 
 def _kitchen_check(entry, body, primitive_set, verbs):
     from cook2ltl.library.recheck import Recheck, recheck
-    from cook2ltl.reduce.validation import KitchenValidator, unsupported
+    from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
 
     missing = unsupported(primitive_set)
     if missing:

@@ -13,7 +13,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from rich.table import Table
 
 from cook2ltl import paths
-from cook2ltl.models.manifest import State, load_manifest, state_of
+from cook2ltl.assembly.manifest import State, load_manifest, state_of
 from cook2ltl.text_safety import literal, styled, terminal, visible
 
 models_app = typer.Typer(help="List, provision and evaluate the models.", invoke_without_command=True, no_args_is_help=False)
@@ -42,7 +42,7 @@ def provision_command(
     force: bool = typer.Option(False, help="Fetch or train again even if present."),
 ) -> None:
     """Fetch or train what is missing into the per-user cache, and link it under models/."""
-    from cook2ltl.models.provision import provision
+    from cook2ltl.assembly.provision import provision
 
     manifest = load_manifest()
     unknown = set(names or []) - set(manifest)
@@ -90,9 +90,9 @@ def eval_ner_command(
     """Strict span micro-F1 on the held-out recipes, overall and per label."""
     from dataclasses import replace
 
-    from cook2ltl.ner.validate import validate
-    from cook2ltl.settings import load_settings
-    from cook2ltl.stack import SPAN_MODEL, span_extractor
+    from cook2ltl.parse.training.validate import validate
+    from cook2ltl.domain.settings_file import load_settings
+    from cook2ltl.assembly.backends import SPAN_MODEL, span_extractor
 
     settings = load_settings()
     if checkpoint:

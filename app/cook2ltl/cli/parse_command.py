@@ -8,8 +8,8 @@ import typer
 from rich.console import Console
 from rich.text import Text
 
-from cook2ltl.domain import ARGUMENT_LABELS, Label, ParsedRecipe
-from cook2ltl.cli.inputs import read_recipe
+from cook2ltl.domain.recipe import ARGUMENT_LABELS, Label, ParsedRecipe
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 COLOURS = {
@@ -29,8 +29,8 @@ def parse_command(
     """Split a recipe into steps and parse each into Verb(What, Where, How, Time, Temperature) frames."""
     from cook2ltl.parse import parse_recipe
     from cook2ltl.parse.serialize import recipe_json
-    from cook2ltl.settings import load_settings
-    from cook2ltl.stack import dependency_parser, span_extractor
+    from cook2ltl.domain.settings_file import load_settings
+    from cook2ltl.assembly.backends import dependency_parser, span_extractor
 
     text = read_recipe(recipe)
     spans, dependencies = span_extractor(load_settings()), dependency_parser()

@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.text import Text
 
 from cook2ltl.errors import UserError
-from cook2ltl.pipeline import Variant
+from cook2ltl.pipeline.records import Variant
 from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 VERDICT_STYLE = {"satisfied": "bold green", "presumably_true": "green", "presumably_false": "yellow",
@@ -35,11 +35,11 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
                    validate: bool | None, repairs: int | None, ground: bool, as_json: bool) -> NoReturn:
     """Translate the recipe with the world model on, roll it out, and exit 0 when every step reached its
     actions' effects and the formula holds, else 1."""
-    from cook2ltl.cli.inputs import read_recipe
+    from cook2ltl.preprocess.recipe_file import read_recipe
     from cook2ltl.cli.translating import open_translator, translated
     from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.reduce.reduction import ReductionSettings
-    from cook2ltl.translate.world_rollout import (
+    from cook2ltl.assembly.translators import TranslateOptions
+    from cook2ltl.pipeline.world_rollout import (
         NO_WORLD_HINT, ActionRolled, Began, Finished, StepRolled, recipe_rollout_json, roll_out_recipe,
     )
 
@@ -51,8 +51,8 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
     if chosen.world is None:
         raise UserError(f"The {chosen.name} primitive set names no world model.", NO_WORLD_HINT)
     errors = terminal(stderr=True)
-    with open_translator(chosen, model, library, variant, ReductionSettings(), validate, repairs, False, True,
-                         errors) as translator:
+    options = TranslateOptions(variant, check=validate, repairs=repairs)
+    with open_translator(chosen, model, library, options, errors) as translator:
         translation = translated(text, translator, errors)
     console = None if as_json else terminal()
     rollout = None

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from cook2ltl.library.body_check import verb_finder
 from cook2ltl.library.store import Library, LibraryEntry
 from cook2ltl.reduce.body import bind, instantiate
-from cook2ltl.reduce.model import Action, Parameter, PrimitiveSet
+from cook2ltl.domain.actions import Action, Parameter, PrimitiveSet
 from cook2ltl.reduce.reduction import LibraryVerb, expand
 
 NO_EXAMPLE = ("not checked in the kitchen: the entry has no example values to fill its placeholders "

@@ -24,7 +24,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, fields
 from typing import ClassVar
 
-from cook2ltl.ltl.limits import MAX_PRINTED_NODES, charge
+from cook2ltl.ltl.limits import charge
 from cook2ltl.ltl.order import SORT_KEY
 
 _INTERNED: weakref.WeakValueDictionary = weakref.WeakValueDictionary()
@@ -45,18 +45,6 @@ class Formula:
     def key(self):
         """Sort key of the canonical order (see :mod:`cook2ltl.ltl.order`)."""
         return SORT_KEY(self)
-
-    def __str__(self) -> str:
-        from cook2ltl.ltl.printer import to_unicode
-
-        return to_unicode(self)
-
-    def __repr__(self) -> str:
-        from cook2ltl.ltl.printer import to_spot
-
-        if self.size > MAX_PRINTED_NODES:  # a repr never raises
-            return f"<{type(self).__name__} of {self.size:,} nodes>"
-        return f"<{type(self).__name__} {to_spot(self)}>"
 
     def __reduce__(self):
         # Pickling must go back through the constructor to stay interned.

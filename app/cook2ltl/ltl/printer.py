@@ -143,3 +143,15 @@ def _operand(f: Formula, style: _Style) -> tuple[str | Formula, ...]:
     if _is_atomic(f) or type(f) in style.prefix:
         return (f,)
     return ("(", f, ")")
+
+
+def _formula_repr(f: Formula) -> str:
+    if f.size > MAX_PRINTED_NODES:  # a repr never raises
+        return f"<{type(f).__name__} of {f.size:,} nodes>"
+    return f"<{type(f).__name__} {to_spot(f)}>"
+
+
+# The syntax never imports its printers (ast.py knows nothing of text); the printer lends every formula its
+# str (Unicode) and repr (Spot). The package's __init__ imports this module, so any use of cook2ltl.ltl has them.
+Formula.__str__ = to_unicode  # type: ignore[method-assign]
+Formula.__repr__ = _formula_repr  # type: ignore[method-assign]

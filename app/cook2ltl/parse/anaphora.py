@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Iterable, Iterator
 
-from cook2ltl.domain import Argument, Connective, Frame
+from cook2ltl.domain.recipe import Argument, Connective, Frame
 
 PRONOUNS = {"it", "them", "this", "these", "that", "those", "they", "everything", "all"}
 

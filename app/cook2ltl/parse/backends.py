@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Protocol, Sequence
 
-from cook2ltl.domain import Span, Token
+from cook2ltl.domain.recipe import Span, Token
 
 
 class SpanExtractor(Protocol):

@@ -6,7 +6,7 @@ import re
 from dataclasses import replace
 from typing import Sequence
 
-from cook2ltl.domain import Connective, Span, Token
+from cook2ltl.domain.recipe import Connective, Span, Token
 
 _VERB_SEPARATOR = re.compile(r"\s*,?\s*\b(?:and/or|and then|and|or|then)\b\s*|\s*,\s*|\s*/\s*", re.IGNORECASE)
 _OR = re.compile(r"\bor\b", re.IGNORECASE)

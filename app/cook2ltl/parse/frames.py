@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from cook2ltl.domain import ARGUMENT_LABELS, Argument, Connective, Frame, Label, Span, Token, field_of
+from cook2ltl.domain.recipe import ARGUMENT_LABELS, Argument, Connective, Frame, Label, Span, Token, field_of
 from cook2ltl.parse.coordination import connective_between, is_negated, split_objects, split_verb
 from cook2ltl.parse.verb_syntax import missed_objects, particle
 

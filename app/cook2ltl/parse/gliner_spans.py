@@ -7,7 +7,7 @@ import threading
 from pathlib import Path
 from typing import Mapping, Sequence
 
-from cook2ltl.domain import Label, Span
+from cook2ltl.domain.recipe import Label, Span
 from cook2ltl.errors import UserError
 
 LABELS_FILE = "cook2ltl.json"

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from cook2ltl.domain import ARGUMENT_LABELS, Argument, Frame, ParsedRecipe, Span, field_of
+from cook2ltl.domain.recipe import ARGUMENT_LABELS, Argument, Frame, ParsedRecipe, Span, field_of
 
 
 def span_json(span: Span) -> dict:

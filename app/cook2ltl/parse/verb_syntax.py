@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 
-from cook2ltl.domain import Label, Span, Token
+from cook2ltl.domain.recipe import Label, Span, Token
 
 # Particles that change what a verb does (turn *on*, switch *off*, heat *up*); "stir in" or "pour over" keep
 # their verb's meaning and name where things go, so they are not joined.

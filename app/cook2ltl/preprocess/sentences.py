@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from cook2ltl.domain import Sentence
+from cook2ltl.domain.recipe import Sentence
 
 # Abbreviations that are never the last word of a sentence.
 NEVER_FINAL = {

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from collections import Counter
 
-from cook2ltl.reduce.model import Action, Call
+from cook2ltl.domain.actions import Action, Call
 
 _CALL = re.compile(r"(?P<name>[a-z][a-z0-9_]*)\((?P<args>[^()]*)\)\Z")
 _CONDITION = re.compile(r"(?P<subject>\$?[a-z0-9_]+)\s*==\s*(?P<state>\$?[a-z0-9_]+)\Z")

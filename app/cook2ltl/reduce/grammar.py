@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 from typing import Iterable
 
-from cook2ltl.reduce.model import CONDITION, TIMER, Action, Call, PrimitiveSet
+from cook2ltl.domain.actions import CONDITION, TIMER, Action, Call, PrimitiveSet
 
 OBJECT, VALUE = "object", "value"  # slot kinds besides CONDITION
 DURATION_UNITS = ("seconds", "minutes", "hours")

@@ -21,10 +21,9 @@ from typing import Callable, Protocol
 
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.grammar import gbnf_literal
-from cook2ltl.reduce.model import Usage
-from cook2ltl.settings import Limits
+from cook2ltl.domain.actions import Usage
+from cook2ltl.domain.settings import Limits
 
-DEFAULT_MODEL = "qwen2.5-coder-1.5b"  # chosen by measurement: see the README's "Action reduction"
 CONTEXT_TOKENS = 4096
 DEFAULT_TIME_LIMIT = Limits.llm_seconds  # seconds; load_model takes the settings' [limits] llm_seconds
 
@@ -220,20 +219,3 @@ class LlamaModel:
             self._llama = Llama(model_path=str(self.path), n_ctx=CONTEXT_TOKENS, n_threads=self.threads,
                                 verbose=False)
         return self._llama
-
-
-def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
-    """A GGUF model of the manifest by name; it is read from disk at its first completion."""
-    from cook2ltl import paths
-    from cook2ltl.models.manifest import State, load_manifest, model_path, state_of
-    from cook2ltl.settings import load_settings
-
-    manifest = load_manifest()
-    choices = [entry.name for entry in manifest.values() if entry.file.endswith(".gguf")]
-    entry = manifest.get(name)
-    if entry is None or name not in choices:
-        raise UserError(f"No language model {name!r} in the model manifest.", f"choose one of: {', '.join(choices)}.")
-    if state_of(entry, verify_hash=False) != State.READY:
-        raise UserError(f"The model {name!r} is not provisioned.", "run `make models` (or `cook2ltl models provision`).")
-    return LlamaModel(name, model_path(entry), state_dir=paths.model_cache_dir() / "prompt-states",
-                      time_limit=load_settings().limits.llm_seconds)

@@ -22,7 +22,7 @@ from pydantic import Field, StringConstraints, field_validator
 
 from cook2ltl import files, paths
 from cook2ltl.errors import UserError
-from cook2ltl.reduce.model import CONDITION, Primitive, PrimitiveSet, WorldSpec
+from cook2ltl.domain.actions import CONDITION, Primitive, PrimitiveSet, WorldSpec
 from cook2ltl.toml_models import FileName, Identifier, PddlName, Table, flag, validated
 
 BUILT_IN = ("recipe", "ai2thor")

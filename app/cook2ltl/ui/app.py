@@ -18,7 +18,8 @@ from textual.binding import Binding
 from textual.screen import Screen
 
 from cook2ltl.errors import UserError
-from cook2ltl.settings import TranslateSettings, load_settings
+from cook2ltl.domain.settings import TranslateSettings
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.text_safety import visible
 from cook2ltl.ui.commands import MainCommands
 from cook2ltl.ui.messages import TranslationDone
@@ -31,7 +32,7 @@ from cook2ltl.ui.screens.translate import TranslateScreen
 from cook2ltl.ui.services import Services, production_services
 
 if TYPE_CHECKING:
-    from cook2ltl.pipeline import Translation
+    from cook2ltl.pipeline.records import Translation
 
 
 class Cook2LTLApp(App):
@@ -135,7 +136,7 @@ def run_app(recipe_path: str | Path | None = None) -> None:
     offline.enforce()  # before any model library is imported, however the app was started
     text = ""
     if recipe_path is not None:
-        from cook2ltl.cli.inputs import read_recipe
+        from cook2ltl.preprocess.recipe_file import read_recipe
 
         if str(recipe_path) == "-":
             raise UserError("The app reads its keys from the terminal, not a recipe from standard input.",

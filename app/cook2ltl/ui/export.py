@@ -9,18 +9,18 @@ from typing import TYPE_CHECKING
 from cook2ltl.errors import UserError
 
 if TYPE_CHECKING:
-    from cook2ltl.pipeline import Translation
+    from cook2ltl.pipeline.records import Translation
 
 
 def write_translation(translation: Translation, path: Path) -> None:
-    from cook2ltl.cli.translate_command import show, with_validation
+    from cook2ltl.pipeline.report import show
     from cook2ltl.text_safety import json_text, terminal
-    from cook2ltl.translate.serialize import translation_json
+    from cook2ltl.pipeline.serialize import translation_json
 
     try:
         with path.open("w", encoding="utf-8") as handle:
             if path.suffix == ".json":
-                handle.write(json_text(with_validation(translation_json(translation), translation)) + "\n")
+                handle.write(json_text(translation_json(translation)) + "\n")
             else:
                 show(translation, terminal(file=handle, width=120, no_color=True, highlight=False, soft_wrap=True))
     except OSError as error:

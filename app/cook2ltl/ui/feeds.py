@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from textual.message import Message
 
-from cook2ltl.settings import TranslateSettings
+from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.ui.messages import (
     ActionReduced, ObjectState, RecipeActionRolled, RecipeParsed, RecipeRolloutBegan, RecipeRolloutDone,
     RecipeStepRolled, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped, StepTranslated, TranslationDone,
@@ -23,9 +23,9 @@ from cook2ltl.ui.messages import (
 from cook2ltl.ui.services import Services
 
 if TYPE_CHECKING:
-    from cook2ltl.kitchen.tasks import Task
+    from cook2ltl.execution.tasks import Task
     from cook2ltl.ltl.ast import Formula
-    from cook2ltl.pipeline import Translation
+    from cook2ltl.pipeline.records import Translation
 
 
 @dataclass(frozen=True)
@@ -74,27 +74,24 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
 
 
 def _translating(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
-    from cook2ltl.pipeline import ActionDone, Finished, Parsed, Started, StepDone, Translator, Variant, run
+    from cook2ltl.assembly.translators import TranslateOptions, build_translator
+    from cook2ltl.pipeline.records import ActionDone, Finished, Parsed, Started, StepDone, Variant
+    from cook2ltl.pipeline.translator import run
     from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.reduce.validation import unsupported
 
     variant = Variant(request.variant)
     primitives = load_primitives(request.primitives)
     yield WorkProgress("loading the parsing models …")
     spans, dependencies = services.spans(), services.dependencies()
     library = services.library() if variant == Variant.AR_LIBRARY else None
-    from cook2ltl.world.kitchens import grounding
-
-    world = grounding(primitives) if request.ground else None  # plans checked where the recipe has got to
-    validator = None
-    if request.validate and (world is None or primitives.world.kitchen is None):  # a kitchen file is its own judge
-        missing = unsupported(primitives)  # a lab's set with actions THOR has no stand-in for: as the CLI does
-        if missing:
-            yield WorkNotice(f"Not checking new reductions: the kitchen has no action for {', '.join(missing)}.")
-        else:
-            validator = services.validator(primitives)
-    translator = Translator(primitives, services.model(request.model, cancel), library, variant, validator=validator,
-                            repairs=request.repairs, approved_only=request.approved_only, grounding=world)
+    # The check box turns the kitchen check off; on, it checks where the rule says it helps, as the CLI does.
+    options = TranslateOptions(variant, check=None if request.validate else False, repairs=request.repairs,
+                               approved_only=request.approved_only, ground=request.ground)
+    notices: list[str] = []
+    translator = build_translator(primitives, services.model(request.model, cancel), library, options,
+                                  services.validator, notices.append)
+    for notice in notices:
+        yield WorkNotice(notice)
     yield WorkProgress("parsing (the span model loads on first use) …")
     total = 0
     for event in run(request.text, spans, dependencies, translator, cancel):
@@ -116,8 +113,8 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
 
 
 def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.Event) -> Iterator[Message]:
-    from cook2ltl.kitchen.rollout import ActionRefused, Started, Stepped
-    from cook2ltl.kitchen.trial import TrialDone, run_trial
+    from cook2ltl.execution.rollout import ActionRefused, Started, Stepped
+    from cook2ltl.assembly.trial import TrialDone, run_trial
     from cook2ltl.reduce.llm import GenerationCancelled
 
     task, plan, formula = request.task, None, request.formula
@@ -152,7 +149,7 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
 def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cancel: threading.Event
                         ) -> Iterator[Message]:
     from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.translate.world_rollout import ActionRolled, Began, Finished, StepRolled, roll_out_recipe
+    from cook2ltl.pipeline.world_rollout import ActionRolled, Began, Finished, StepRolled, roll_out_recipe
 
     translation = request.translation
     if translation is None:
@@ -181,14 +178,15 @@ def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cance
 
 
 def _planner(services: Services, request: RolloutRequest, cancel: threading.Event):
-    from cook2ltl.kitchen.planning import PRIMITIVES, Planner
-    from cook2ltl.pipeline import Translator
+    from cook2ltl.assembly.planning import PRIMITIVES, Planner, ignore_notice
+    from cook2ltl.assembly.translators import TranslateOptions, build_translator
     from cook2ltl.reduce.primitives import load_primitives
 
-    primitives = load_primitives(PRIMITIVES)
-    # New reductions are checked and repaired before they are cached, as when translating.
-    translator = Translator(primitives, services.model(request.model, cancel), services.library(),
-                            validator=services.validator(primitives), repairs=request.repairs)
+    # New reductions are checked and repaired before they are cached, as when translating; the planner grounds
+    # each plan in the kitchen it runs in.
+    options = TranslateOptions(repairs=request.repairs, ground=False)
+    translator = build_translator(load_primitives(PRIMITIVES), services.model(request.model, cancel),
+                                  services.library(), options, services.validator, ignore_notice)
     return Planner(translator, services.spans(), services.dependencies())
 
 

@@ -9,14 +9,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from cook2ltl.reduce.llm import DEFAULT_MODEL
+from cook2ltl.assembly.backends import DEFAULT_MODEL
 
 if TYPE_CHECKING:
-    from cook2ltl.kitchen.executor import Kitchen
+    from cook2ltl.execution.executor import Kitchen
     from cook2ltl.library import Library
     from cook2ltl.parse.backends import DependencyParser, SpanExtractor
     from cook2ltl.reduce.llm import LanguageModel
-    from cook2ltl.reduce.model import PrimitiveSet
+    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.reduce.validation import PlanValidator
 
 
@@ -109,28 +109,28 @@ def production_services() -> Services:
     from cook2ltl import paths
 
     def spans():
-        from cook2ltl.settings import load_settings
-        from cook2ltl.stack import span_extractor
+        from cook2ltl.domain.settings_file import load_settings
+        from cook2ltl.assembly.backends import span_extractor
 
         return span_extractor(load_settings())
 
     def dependencies():
-        from cook2ltl.stack import dependency_parser
+        from cook2ltl.assembly.backends import dependency_parser
 
         return dependency_parser()
 
     def model(name: str):
-        from cook2ltl.reduce.llm import load_model
+        from cook2ltl.assembly.backends import load_model
 
         return load_model(name)
 
     def kitchen(scene: str):
-        from cook2ltl.kitchen.launcher import start_kitchen
+        from cook2ltl.execution.launcher import start_kitchen
 
         return start_kitchen(scene, "embedded")
 
     def validator(primitives):
-        from cook2ltl.reduce.validation import KitchenValidator
+        from cook2ltl.execution.kitchen_check import KitchenValidator
 
         return KitchenValidator(primitives)
 
@@ -139,7 +139,7 @@ def production_services() -> Services:
 
 def _language_models() -> tuple[str, ...]:
     """The GGUF models of the manifest (a TOML read), default first."""
-    from cook2ltl.models.manifest import load_manifest
+    from cook2ltl.assembly.manifest import load_manifest
 
     names = [entry.name for entry in load_manifest().values() if entry.file.endswith(".gguf")]
     return tuple(sorted(names, key=lambda name: name != DEFAULT_MODEL)) or (DEFAULT_MODEL,)

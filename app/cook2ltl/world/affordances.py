@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from cook2ltl.reduce.model import CONDITION, TIMER, Call, PrimitiveSet
+from cook2ltl.domain.actions import CONDITION, TIMER, Call, PrimitiveSet
 from cook2ltl.world.logic import State, bindings, holds
 from cook2ltl.world.world import World
 

@@ -8,11 +8,11 @@ whole plan. Lines the effect does not need are then dropped (`pruned`). Every li
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from cook2ltl.reduce.model import Call
+from cook2ltl.domain.actions import Call
 from cook2ltl.world.effects import fact_text
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.planner import Planner, all_reached, reached

@@ -20,7 +20,7 @@ from pathlib import Path
 from cook2ltl import files, paths
 from cook2ltl.errors import UserError
 from cook2ltl.paths import shown
-from cook2ltl.reduce.model import Action
+from cook2ltl.domain.actions import Action
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.world import World
 

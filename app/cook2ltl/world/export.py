@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from cook2ltl.reduce.model import Call
+from cook2ltl.domain.actions import Call
 from cook2ltl.world.logic import Fact, State, bindings, holds
 from cook2ltl.world.planner import build_problem, reached
 from cook2ltl.world.world import PROCESS, World

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
-from cook2ltl.reduce.model import PrimitiveSet
+from cook2ltl.domain.actions import PrimitiveSet
 from cook2ltl.world.check import Grounding, Start
 from cook2ltl.world.planner import FastDownward, Planner
 from cook2ltl.world.pddl import load_domain
@@ -55,10 +55,10 @@ def thor_start(names: tuple[str, ...], places: Collection[str], asks: Mapping[st
                wanted: tuple[str, ...], spare: list[str], scene: str | None) -> Start:
     """A THOR kitchen for a recipe, as the kitchen check binds it: the scene where most of the recipe's names find
     an object or a stand-in (an ingredient THOR lacks is a food object, a mixture things go into a bowl, a
-    saucepan a pot: `validation_scene`; one that can take the states `asks` names), so the world observes
+    saucepan a pot: `stand_ins`; one that can take the states `asks` names), so the world observes
     what is done to them."""
-    from cook2ltl.kitchen.executor import liquids
-    from cook2ltl.reduce.validation_scene import best_frame, frame_in
+    from cook2ltl.thor_types import liquids
+    from cook2ltl.world.stand_ins import best_frame, frame_in
     from cook2ltl.world.thor_kitchens import scene_objects, scene_start
 
     own = [n for n in names if n not in liquids()]

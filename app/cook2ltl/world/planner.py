@@ -14,7 +14,7 @@ from functools import cache
 from pathlib import Path
 from typing import Protocol
 
-from cook2ltl.reduce.model import Call
+from cook2ltl.domain.actions import Call
 from cook2ltl.world.logic import Fact, State, effects_of
 from cook2ltl.world.world import PROCESS, WAIT, World
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from cook2ltl.reduce.model import TIMER, Call
+from cook2ltl.domain.actions import TIMER, Call
 from cook2ltl.world.logic import Fact, State, applicable, bindings, effects_of, ground, holds, match_atom
 from cook2ltl.world.logic import positive_facts, successor
 from cook2ltl.world.pddl import Domain

@@ -24,7 +24,7 @@ from cook2ltl.ui.messages import EditorReady, KitchenChecked
 if TYPE_CHECKING:
     from cook2ltl.library import LibraryEntry
     from cook2ltl.library.recheck import Recheck
-    from cook2ltl.reduce.model import PrimitiveSet
+    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.reduce.reduction import LibraryVerb
 
 
@@ -125,7 +125,7 @@ class EntryEditor(ModalScreen[Edited | None]):
     @work(thread=True, exclusive=True, exit_on_error=False, group="editor")
     def kitchen_check(self, body: str) -> None:
         from cook2ltl.library.recheck import Recheck, recheck
-        from cook2ltl.reduce.validation import unsupported
+        from cook2ltl.execution.kitchen_check import unsupported
 
         missing = unsupported(self.primitives)
         if missing:

@@ -51,7 +51,7 @@ class RolloutScreen(WorkScreen):
         self.recipe_file: Path | None = None  # opened with ctrl+o
 
     def compose(self) -> ComposeResult:
-        from cook2ltl.kitchen.scenes import scene_names
+        from cook2ltl.simulator.scenes import scene_names
 
         yield Header()
         with Horizontal(id="rollout-options", classes="options"):
@@ -90,7 +90,7 @@ class RolloutScreen(WorkScreen):
         target.value = choice if any(value == choice for _, value in targets) else targets[0][1]
 
     def _targets(self) -> list[tuple[Content, str]]:
-        from cook2ltl.kitchen.tasks import load_tasks
+        from cook2ltl.execution.tasks import load_tasks
 
         targets = [(f"task {t.id}: {t.instruction}", f"task:{t.id}") for t in load_tasks()]
         translation = self.app.translation
@@ -152,7 +152,8 @@ class RolloutScreen(WorkScreen):
 
     def request(self) -> RolloutRequest | RecipeRolloutRequest:
         """The chosen target as a request; UserError for what cannot run."""
-        from cook2ltl.kitchen.tasks import find_task, reference_formula
+        from cook2ltl.execution.tasks import find_task
+        from cook2ltl.assembly.trial import reference_formula
 
         target = self.query_one("#target", Select).value
         scene = self.query_one("#scene", Select).value
@@ -174,7 +175,7 @@ class RolloutScreen(WorkScreen):
     def _file_request(self) -> RecipeRolloutRequest:
         """The opened file translated with the recipe primitives and the world model, as `cook2ltl rollout
         RECIPE-FILE` does; UserError for a file that is no recipe."""
-        from cook2ltl.cli.inputs import read_recipe
+        from cook2ltl.preprocess.recipe_file import read_recipe
 
         text = read_recipe(str(self.recipe_file))
         settings = self.app.translate_settings

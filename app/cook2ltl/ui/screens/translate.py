@@ -164,7 +164,7 @@ class TranslateScreen(WorkScreen):
         self.app.push_screen(PathDialog("Open a recipe file", f"{Path.cwd()}/", "Open"), self._open)
 
     def _open(self, path: Path | None) -> None:
-        from cook2ltl.cli.inputs import read_recipe
+        from cook2ltl.preprocess.recipe_file import read_recipe
 
         if path is None:
             return

@@ -12,7 +12,7 @@ from cook2ltl.ui.literal import shown, shown_formula
 
 if TYPE_CHECKING:
     from cook2ltl.ltl.ast import Formula
-    from cook2ltl.pipeline import StepResult
+    from cook2ltl.pipeline.records import StepResult
 
 
 class FormulaList(Static):

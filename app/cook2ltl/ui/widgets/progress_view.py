@@ -13,10 +13,10 @@ from textual.widgets import Static
 from cook2ltl.ui.literal import formula_text, shown, shown_formula, shown_styled
 
 if TYPE_CHECKING:
-    from cook2ltl.kitchen.rollout import TraceStep
-    from cook2ltl.kitchen.trial import Trial
+    from cook2ltl.execution.rollout import TraceStep
+    from cook2ltl.assembly.trial import Trial
     from cook2ltl.ltl.ast import Atom, Formula
-    from cook2ltl.translate.world_rollout import LineRun, RecipeRollout
+    from cook2ltl.pipeline.world_rollout import LineRun, RecipeRollout
     from cook2ltl.ui.messages import RecipeRolloutBegan, RolloutBegan
 
 VERDICT_STYLE = {"satisfied": "bold $text-success", "presumably_true": "$text-success",
@@ -80,7 +80,7 @@ class FormulaProgress(Static):
         self._draw(step.met, step.remaining, step.verdict.value)
 
     def finish(self, trial: Trial) -> None:
-        from cook2ltl.kitchen.trial import explain
+        from cook2ltl.assembly.trial import explain
 
         result = trial.rollout
         met = result.steps[-1].met if result.steps else frozenset()

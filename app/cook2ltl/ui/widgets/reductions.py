@@ -14,8 +14,8 @@ from cook2ltl.ui.literal import shown
 from cook2ltl.ui.widgets.entry_detail import check_content
 
 if TYPE_CHECKING:
-    from cook2ltl.domain import ParsedRecipe
-    from cook2ltl.pipeline import ActionResult, Stats, Translation
+    from cook2ltl.domain.recipe import ParsedRecipe
+    from cook2ltl.pipeline.records import ActionResult, Stats, Translation
 
 # (name, width): Textual content cells are not measured by the table, so theirs are fixed.
 COLUMNS = (("#", None), ("step", None), ("action", None), ("reduction", 14), ("LLM s", None), ("kitchen", 9),
@@ -102,7 +102,7 @@ def result_detail(result: ActionResult | None) -> Content:
 
 def summary(translation: Translation) -> Content:
     """The translation's counts and rates, after why any library verbs were not offered to the model."""
-    from cook2ltl.cli.translate_command import rates_line
+    from cook2ltl.pipeline.report import rates_line
 
     stats: Stats = translation.stats
     skipped = [shown(f"! {reason}").stylize("$text-warning") for reason in translation.skipped_verbs]

@@ -10,7 +10,7 @@ from textual.widgets import Static
 from cook2ltl.ui.literal import shown, shown_styled
 
 if TYPE_CHECKING:
-    from cook2ltl.domain import Frame, ParsedRecipe, Step
+    from cook2ltl.domain.recipe import Frame, ParsedRecipe, Step
 
 # Theme variables, so every theme colours the six categories of the paper's Sec. IV-C.
 LABEL_STYLE = {
@@ -48,7 +48,7 @@ def step_content(step: Step) -> Content:
 
 def frame_content(frame: Frame) -> Content:
     """verb(what, where, …) with each argument in its category's style; * marks one zero anaphora inferred."""
-    from cook2ltl.domain import ARGUMENT_LABELS
+    from cook2ltl.domain.recipe import ARGUMENT_LABELS
 
     arguments = [shown(argument.span.text + ("*" if argument.inferred else "")).stylize(LABEL_STYLE[label.value])
                  for label in ARGUMENT_LABELS for argument in frame.arguments(label)]
