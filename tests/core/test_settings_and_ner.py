@@ -2,14 +2,14 @@ from pathlib import Path
 
 import pytest
 
+from cook2ltl.assembly.backends import span_extractor
 from cook2ltl.domain.recipe import Label, Span
+from cook2ltl.domain.settings import Settings
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
 from cook2ltl.parse.training.brat import read_recipe
 from cook2ltl.parse.training.evaluate import strict_f1
-from cook2ltl.parse.training.examples import is_validation, to_gliner, SentenceExample
-from cook2ltl.domain.settings import Settings
-from cook2ltl.domain.settings_file import load_settings
-from cook2ltl.assembly.backends import span_extractor
+from cook2ltl.parse.training.examples import SentenceExample, is_validation, to_gliner
 
 
 def test_settings_read_a_lab_checkpoint_and_its_label_names(tmp_path):

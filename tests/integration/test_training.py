@@ -7,7 +7,6 @@ from pathlib import Path
 from cook2ltl.assembly.manifest import load_manifest, model_path
 from cook2ltl.parse.training.train import TrainConfig, train
 from cook2ltl.paths import models_dir
-
 from tests.models_required import require_models
 
 

@@ -3,8 +3,8 @@
 import pytest
 
 from cook2ltl.simulator.scenes import UnknownScene, canonical_scene, load_scene, scene_names
-from cook2ltl.thor_types import load_type_rules
 from cook2ltl.simulator.state import ancestors
+from cook2ltl.thor_types import load_type_rules
 
 
 def test_teleport_and_teleport_full(bench):

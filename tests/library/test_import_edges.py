@@ -13,7 +13,8 @@ import threading
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from cook2ltl.errors import UserError
 from cook2ltl.library import Library, Status

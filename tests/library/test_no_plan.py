@@ -9,13 +9,13 @@ import sys
 import pytest
 from typer.testing import CliRunner
 
+from cook2ltl.domain.actions import Source
 from cook2ltl.errors import UserError
 from cook2ltl.library import Library, Status
 from cook2ltl.library.exchange import export_library, import_library
 from cook2ltl.parse import parse_recipe
+from cook2ltl.pipeline.records import TranslationFinished
 from cook2ltl.pipeline.translator import NO_PLAN_PROBLEM, Translator, translate
-from cook2ltl.pipeline.records import Finished
-from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.validation import Validation
 from tests.fakes import ScriptedDependencies, ScriptedSpans
@@ -56,7 +56,7 @@ def translated(model, library, validator=None, approved_only=False):
     recipe = parse_recipe(TEXT, ScriptedSpans(SPANS), ScriptedDependencies())
     translator = Translator(load_primitives("recipe"), model, library, validator=validator,
                             approved_only=approved_only)
-    return next(e.translation for e in translate(recipe, translator) if isinstance(e, Finished))
+    return next(e.translation for e in translate(recipe, translator) if isinstance(e, TranslationFinished))
 
 
 def boil_results(translation):

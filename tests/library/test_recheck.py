@@ -2,10 +2,10 @@
 
 import pytest
 
+from cook2ltl.execution.kitchen_check import KitchenValidator
 from cook2ltl.library import Library
 from cook2ltl.library.recheck import NO_EXAMPLE, Recheck, example_action, live_verbs, recheck
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.execution.kitchen_check import KitchenValidator
 
 
 @pytest.fixture

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from cook2ltl.reduce.llm import Completion
 from cook2ltl.domain.actions import Usage
+from cook2ltl.reduce.llm import Completion
 
 
 @dataclass

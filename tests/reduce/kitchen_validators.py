@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import pytest
 
-from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.execution.kitchen_check import KitchenValidator
+from cook2ltl.reduce.primitives import load_primitives
 
 
 @pytest.fixture(scope="module")

@@ -2,10 +2,10 @@
 
 import pytest
 
+from cook2ltl.domain.actions import Action, Call
 from cook2ltl.domain.recipe import Argument, Connective, Frame, Label, Span
 from cook2ltl.reduce.action import actions_of, parameter
 from cook2ltl.reduce.body import bind, instantiate, loops, parametrize, placeholders, read_body, without_loops
-from cook2ltl.domain.actions import Action, Call
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import LibraryVerb, expand
 

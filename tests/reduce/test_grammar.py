@@ -4,12 +4,12 @@ import re
 
 import pytest
 
-from cook2ltl.reduce.action import parameter
-from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
 from cook2ltl.domain.actions import Action, Call
+from cook2ltl.reduce.action import parameter
+from cook2ltl.reduce.body import read_call
+from cook2ltl.reduce.grammar import admits, to_gbnf, vocabulary
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.prompt import example_functions
-from cook2ltl.reduce.body import read_call
 from tests.reduce.gbnf import accepts
 
 RECIPE = load_primitives("recipe")

@@ -2,11 +2,11 @@
 
 import pytest
 
-from cook2ltl.assembly.manifest import State, load_manifest, model_path, state_of
+from cook2ltl.assembly.manifest import ModelState, load_manifest, model_path, state_of
+from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.grammar import admits, vocabulary
 from cook2ltl.reduce.llm import LlamaModel
-from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 
@@ -17,7 +17,7 @@ SETTINGS = ReductionSettings(max_lines=2)
 @pytest.fixture(scope="module")
 def tiny_path():
     entry = load_manifest()[TINY]
-    if state_of(entry, verify_hash=False) != State.READY:
+    if state_of(entry, verify_hash=False) != ModelState.READY:
         pytest.fail(f"model not provisioned: {TINY}; run `make models`")
     return model_path(entry)
 

@@ -3,9 +3,9 @@
 import pytest
 
 from cook2ltl import paths
+from cook2ltl.domain.actions import Action
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.action import parameter
-from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.prompt import build_prompt, example_functions, header
 
@@ -49,6 +49,8 @@ def test_a_lab_adds_its_own_set_without_code(tmp_path):
     ("objects = ['pot']\n[primitives]\nput = ['what']\n", "examples is missing: it must be the file of the prompt's example"),
     ("examples = 'missing.txt'\nobjects = ['pot']\n[primitives]\nput = ['what']\n", "No examples file at"),
     ("this is = = not toml", "not valid TOML"),
+    ("examples = 'e.txt'\nobjects = ['pot']\n[primitives]\nput = ['what']\n[thor]\ngrasp = 'pick_up'\n",
+     "[thor] names grasp, which the set's [primitives] do not have"),
 ])
 def test_a_broken_set_is_a_user_error_with_a_hint(tmp_path, content, problem):
     (tmp_path / "e.txt").write_text("def f(x: what):\n    put(x)\n")

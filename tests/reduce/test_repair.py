@@ -2,14 +2,14 @@
 
 import pytest
 
+from cook2ltl.domain.actions import Source
 from cook2ltl.errors import UserError
 from cook2ltl.library import Library
 from cook2ltl.library.store import Status
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline.translator import Translator, translate
-from cook2ltl.pipeline.records import Finished
 from cook2ltl.pipeline.rates import rates
-from cook2ltl.domain.actions import Source
+from cook2ltl.pipeline.records import TranslationFinished
+from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
@@ -31,7 +31,7 @@ def library(tmp_path):
 
 def translated(translator, text=TEXT, spans=SPANS):
     recipe = parse_recipe(text, ScriptedSpans(spans), ScriptedDependencies())
-    return next(e for e in translate(recipe, translator) if isinstance(e, Finished)).translation
+    return next(e for e in translate(recipe, translator) if isinstance(e, TranslationFinished)).translation
 
 
 def test_a_failing_plan_is_repaired_with_the_failure_in_the_prompt(validators, library):

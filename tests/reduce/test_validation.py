@@ -4,12 +4,12 @@ import time
 
 import pytest
 
+from cook2ltl.domain.actions import Action, Primitive, PrimitiveSet
 from cook2ltl.errors import UserError
+from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.body import read_body
-from cook2ltl.domain.actions import Action, PrimitiveSet, Primitive
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
 from tests.reduce.kitchen_validators import validators  # noqa: F401  (a fixture)
 
 MICROWAVE = "open(microwave)\npick_up(potato)\nput(potato, microwave)\nclose(microwave)\nturn_on(microwave)\nwait(potato == hot)"
@@ -122,6 +122,16 @@ def test_a_primitive_set_the_kitchen_cannot_run():
     assert unsupported(robot) == ("grasp",) and unsupported(load_primitives("recipe")) == ()
     with pytest.raises(UserError, match="no action for grasp"):
         KitchenValidator(robot)
+
+
+def test_a_labs_set_says_in_its_file_what_each_primitive_does_in_the_kitchen(tmp_path):
+    """A [thor] table makes a set checkable with no code: each primitive as an AI2-THOR one, touch or pour."""
+    (tmp_path / "e.txt").write_text("def f(x: what):\n    grasp(x)\n")
+    (tmp_path / "arm.toml").write_text("examples = 'e.txt'\nobjects = ['pot']\n[primitives]\ngrasp = ['what']\n"
+                                       "poke = ['what']\nzap = ['what']\n[thor]\ngrasp = 'pick_up'\n"
+                                       "poke = 'touch'\nzap = 'teleport'\n")
+    assert unsupported(load_primitives(str(tmp_path / "arm.toml"))) == ("zap",)
+
 
 
 def test_an_ingredient_things_go_into_is_a_container(validators):

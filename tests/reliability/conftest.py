@@ -10,8 +10,8 @@ from tests.reliability.hostile import TRIED
 
 @pytest.fixture(scope="session")
 def real_parsers():
-    from cook2ltl.domain.settings import Settings
     from cook2ltl.assembly.backends import dependency_parser, span_extractor
+    from cook2ltl.domain.settings import Settings
 
     require_models("gliner-cook2ltl", "spacy-sm")
     return span_extractor(Settings()), dependency_parser()

@@ -8,7 +8,8 @@ from collections import Counter
 from datetime import timedelta
 from typing import Sequence
 
-from hypothesis import HealthCheck, settings, strategies as st
+from hypothesis import HealthCheck, settings
+from hypothesis import strategies as st
 
 from cook2ltl.domain.recipe import Label, Span
 

@@ -9,7 +9,8 @@ import io
 import sys
 
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from cook2ltl.cli import main
 from tests.fakes import ScriptedDependencies

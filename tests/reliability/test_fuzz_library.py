@@ -21,7 +21,8 @@ import tempfile
 from contextlib import closing, contextmanager
 from pathlib import Path
 
-from hypothesis import given, strategies as st
+from hypothesis import given
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from cook2ltl.cli import app

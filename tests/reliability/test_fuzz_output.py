@@ -11,13 +11,14 @@ import io
 import json
 import re
 
-from hypothesis import given, strategies as st
+from hypothesis import given
+from hypothesis import strategies as st
 from rich.table import Table
 from rich.text import Text
 
+from cook2ltl.domain.actions import Action, Parameter
 from cook2ltl.reduce.grammar import to_gbnf, vocabulary
 from cook2ltl.reduce.llm import line_grammar
-from cook2ltl.domain.actions import Action, Parameter
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.text_safety import json_text, literal, styled, terminal, visible
 from cook2ltl.ui.literal import shown

@@ -17,15 +17,16 @@ from contextlib import contextmanager
 from datetime import date, datetime, time
 from pathlib import Path
 
-from hypothesis import given, strategies as st
+from hypothesis import given
+from hypothesis import strategies as st
 
 from cook2ltl import files, paths
-from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.cli.recipe_rollout import is_recipe
 from cook2ltl.domain.recipe import Label
-from cook2ltl.errors import UserError
-from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.errors import UserError
+from cook2ltl.preprocess.recipe_file import read_recipe
+from cook2ltl.reduce.primitives import load_primitives
 from tests.reliability.hostile import FUZZ, TRIED
 
 IDENTIFIER = re.compile(r"[a-z][a-z0-9_]*\Z")

@@ -9,14 +9,14 @@ leave every grammar exactly as narrow as without them."""
 
 import pytest
 
-from cook2ltl.library import Library
 from cook2ltl.assembly.manifest import load_manifest, model_path
+from cook2ltl.domain.actions import Source
+from cook2ltl.library import Library
+from cook2ltl.pipeline.records import ActionDone, TranslationFinished, Variant
 from cook2ltl.pipeline.translator import Translator, run
-from cook2ltl.pipeline.records import ActionDone, Finished, Variant
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.grammar import admits, vocabulary
 from cook2ltl.reduce.llm import LlamaModel
-from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.text_safety import visible
 from tests.fakes import ScriptedDependencies, ScriptedSpans
@@ -54,7 +54,7 @@ def test_hostile_recipe_text_yields_only_admissible_lines(real_parsers):
     model = Recording(LlamaModel("smollm2-135m", model_path(load_manifest()["smollm2-135m"]), threads=2))
     translator = Translator(primitives, model, None, Variant.AR_STAR)
     events = list(run(HOSTILE_RECIPE, *real_parsers, translator))
-    assert isinstance(events[-1], Finished)
+    assert isinstance(events[-1], TranslationFinished)
     reduced = [e.result.reduction for e in events if isinstance(e, ActionDone) and e.result.reduction.source == Source.LLM]
     assert len(reduced) == len(model.texts) >= 6  # every action of every step went to the model
     lines = 0

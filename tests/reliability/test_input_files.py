@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from cook2ltl.preprocess.recipe_file import read_recipe
-from cook2ltl.errors import UserError
-from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.errors import UserError
+from cook2ltl.preprocess.recipe_file import read_recipe
+from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.world.effects import verb_table
 from cook2ltl.world.pddl import load_domain
 from cook2ltl.world.recipe_kitchen import read_kitchen

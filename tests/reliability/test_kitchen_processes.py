@@ -4,18 +4,17 @@ SIGKILL, and a player that dies under a running Controller."""
 import os
 import signal
 import subprocess
-import threading
 import sys
+import threading
 import time
 
 import pytest
 
+from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
 from cook2ltl.errors import UserError
 from cook2ltl.execution.launcher import start_embedded
-from cook2ltl.execution.unavailable import KitchenUnavailable
 from cook2ltl.execution.tasks import find_task
-from cook2ltl.assembly.trial import reference_formula
-from cook2ltl.assembly.trial import TrialDone, run_trial
+from cook2ltl.execution.unavailable import KitchenUnavailable
 from tests.reliability.processes import adopting_orphans, children, command_line, wait_until_gone
 
 pytest.importorskip("ai2thor")

@@ -8,7 +8,8 @@ import subprocess
 import sys
 
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from cook2ltl.errors import UserError
 from cook2ltl.library import Library, Status

@@ -2,12 +2,12 @@
 
 import pytest
 
-from cook2ltl.preprocess.recipe_file import read_recipe
+from cook2ltl.domain.settings import Limits
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
 from cook2ltl.parse import parse_recipe
 from cook2ltl.preprocess import visible_text
-from cook2ltl.domain.settings import Limits
-from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.preprocess.recipe_file import read_recipe
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 
 SMALL = Limits(recipe_bytes=1000, steps=5)

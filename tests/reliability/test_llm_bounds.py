@@ -5,10 +5,10 @@ import time
 
 import pytest
 
-from cook2ltl.assembly.manifest import State, load_manifest, model_path, state_of
+from cook2ltl.assembly.manifest import ModelState, load_manifest, model_path, state_of
+from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.llm import GenerationCancelled, GenerationStopped, LlamaModel
-from cook2ltl.domain.actions import Action
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 
@@ -20,7 +20,7 @@ LONG = ReductionSettings(max_lines=12, comments=True)
 @pytest.fixture(scope="module")
 def tiny():
     entry = load_manifest()[TINY]
-    if state_of(entry, verify_hash=False) != State.READY:
+    if state_of(entry, verify_hash=False) != ModelState.READY:
         pytest.fail(f"model not provisioned: {TINY}; run `make models`")
     model = LlamaModel(TINY, model_path(entry), threads=2)
     simmer = Action("simmer", (parameter("what", "the sauce"),))

@@ -8,11 +8,11 @@ import sys
 import pytest
 
 from cook2ltl import paths
+from cook2ltl.domain.actions import Source
 from cook2ltl.library import Library
 from cook2ltl.parse import parse_recipe
+from cook2ltl.pipeline.records import TranslationFinished
 from cook2ltl.pipeline.translator import Translator, translate
-from cook2ltl.pipeline.records import Finished
-from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
@@ -82,7 +82,7 @@ def test_a_code_body_in_the_library_is_never_run_and_never_used(tmp_path, body):
     recipe = parse_recipe(TEXT, ScriptedSpans(SPANS), ScriptedDependencies())
     events = list(translate(recipe, Translator(load_primitives("recipe"), model, store)))
     result = events[-1].translation.steps[0].actions[0]
-    assert isinstance(events[-1], Finished)
+    assert isinstance(events[-1], TranslationFinished)
     assert result.reduction.source == Source.LLM and model.calls == 1  # the stored body did not fit: reduced anew
     assert [call.text() for call in result.plan] == BOIL.splitlines()
     assert store.get(bad.id).status == "rejected"  # replaced by the new reduction

@@ -2,17 +2,18 @@
 result or a UserError / LTLSyntaxError, never another exception."""
 
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
+from cook2ltl.domain.settings import Limits
 from cook2ltl.errors import UserError
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.parse import parse_recipe
+from cook2ltl.pipeline.records import TranslationFinished
 from cook2ltl.pipeline.translator import Translator, translate
-from cook2ltl.pipeline.records import Finished
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.domain.settings import Limits
 from tests.fakes import ScriptedDependencies
 from tests.reduce.fake_model import ScriptedModel
 from tests.reliability.hostile import HAND_MADE, TRIED, WordSpans, hostile_text
@@ -73,7 +74,7 @@ def test_any_recipe_translates_with_a_scripted_model_or_is_a_user_error(recipe_p
     except UserError:
         return
     events = list(translate(parsed, Translator(recipe_primitives, model, None, variant="AR")))
-    assert isinstance(events[-1], Finished)
+    assert isinstance(events[-1], TranslationFinished)
     translation = events[-1].translation
     assert len(translation.steps) == len(parsed.steps)
     for step in translation.steps:

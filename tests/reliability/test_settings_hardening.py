@@ -7,9 +7,9 @@ from pathlib import Path
 import pytest
 
 from cook2ltl.domain.recipe import Label
-from cook2ltl.errors import UserError
 from cook2ltl.domain.settings import Limits, NerSettings, Settings, TranslateSettings
 from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.errors import UserError
 
 
 def refused(tmp_path: Path, content: str) -> str:

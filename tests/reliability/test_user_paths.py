@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 
 from cook2ltl import paths
-from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.cli.recipe_rollout import is_recipe
 from cook2ltl.errors import UserError
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.reduce.primitives import load_primitives
 
 HOSTILE = {

@@ -8,17 +8,17 @@ import pytest
 from typer.testing import CliRunner
 
 from cook2ltl import paths
-from cook2ltl.cli import app
 from cook2ltl.assembly import planning
-from cook2ltl.execution import launcher
-from cook2ltl.execution.unavailable import KitchenUnavailable
-from cook2ltl.world.thor_names import UnknownObject
-from cook2ltl.assembly.planning import Planner
-from cook2ltl.execution.tasks import find_task
+from cook2ltl.assembly.planning import TaskPlanner
 from cook2ltl.assembly.trial import run_trial
+from cook2ltl.cli import app
+from cook2ltl.execution import launcher
+from cook2ltl.execution.tasks import find_task
+from cook2ltl.execution.unavailable import KitchenUnavailable
 from cook2ltl.library import Library
 from cook2ltl.pipeline.translator import Translator
 from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.world.thor_names import UnknownObject
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.models_required import require_models
 from tests.reduce.fake_model import ScriptedModel
@@ -49,7 +49,7 @@ def library(tmp_path):
 def planner(answers, library, ground=True):
     model = ScriptedModel(answers)
     translator = Translator(load_primitives("ai2thor"), model, library)
-    return Planner(translator, ScriptedSpans(SPANS), ScriptedDependencies(), ground), model
+    return TaskPlanner(translator, ScriptedSpans(SPANS), ScriptedDependencies(), ground), model
 
 
 def planned_trial(kitchen, planner, task):

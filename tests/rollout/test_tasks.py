@@ -4,13 +4,20 @@ files' checks."""
 
 import pytest
 
+from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
 from cook2ltl.errors import UserError
 from cook2ltl.execution.rollout import Stop
 from cook2ltl.execution.tasks import (
-    CATEGORIES, PARAPHRASES, Condition, check_goal, condition_met, find_task, load_tasks, paraphrases_file,
+    CATEGORIES,
+    PARAPHRASES,
+    Condition,
+    check_goal,
+    condition_met,
+    find_task,
+    load_tasks,
+    paraphrases_file,
     tasks_file,
 )
-from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
 from cook2ltl.ltl import Verdict, parse
 
 PAPER = {"microwave-potato": "Microwave the potato.", "chop-tomato": "Chop the tomato.",

@@ -1,16 +1,21 @@
 """Formulas of plans and steps: sequence, and, or, not, until; atoms checked against the primitives."""
 
+from cook2ltl.domain.actions import Action, Call
 from cook2ltl.domain.recipe import Connective
+from cook2ltl.formulas.formula import (
+    Part,
+    check,
+    direct_calls,
+    direct_element,
+    plan_element,
+    step_element,
+)
 from cook2ltl.ltl import parse
 from cook2ltl.ltl.ast import Atom
 from cook2ltl.ltl.patterns import sequenced_visit
 from cook2ltl.ltl.progress import holds
 from cook2ltl.reduce.action import parameter
-from cook2ltl.domain.actions import Action, Call
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.formulas.formula import (
-    Part, check, direct_calls, direct_element, plan_element, step_element,
-)
 
 RECIPE = load_primitives("recipe")
 a, b, c = Atom("a"), Atom("b"), Atom("c")

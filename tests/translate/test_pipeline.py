@@ -6,14 +6,14 @@ import threading
 import pytest
 from typer.testing import CliRunner
 
+from cook2ltl.domain.actions import Source
 from cook2ltl.library import Library
 from cook2ltl.ltl import parse
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline.translator import Translator, run, translate
-from cook2ltl.pipeline.records import ActionDone, Finished, Parsed, Started, StepDone, Variant
-from cook2ltl.domain.actions import Source
-from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.pipeline.records import ActionDone, Parsed, StepDone, TranslationFinished, TranslationStarted, Variant
 from cook2ltl.pipeline.serialize import translation_json
+from cook2ltl.pipeline.translator import Translator, run, translate
+from cook2ltl.reduce.primitives import load_primitives
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
 
@@ -34,7 +34,7 @@ def parsed(text=TEXT, spans=SPANS):
 
 def translated(translator, recipe=None):
     events = list(translate(recipe or parsed(), translator))
-    assert isinstance(events[0], Started) and isinstance(events[-1], Finished)
+    assert isinstance(events[0], TranslationStarted) and isinstance(events[-1], TranslationFinished)
     return events[-1].translation, events
 
 
@@ -107,12 +107,12 @@ def test_an_action_without_an_admissible_plan_is_reported(library):
 def test_progress_events_and_cancel(library):
     translator = Translator(load_primitives("recipe"), ScriptedModel({"boil": BOIL, "mash": MASH}), library)
     _, events = translated(translator)
-    assert events[0] == Started(steps=3, actions=4)
+    assert events[0] == TranslationStarted(steps=3, actions=4)
     assert [e.done for e in events if isinstance(e, ActionDone)] == [1, 2, 3, 4]
     assert sum(isinstance(e, StepDone) for e in events) == 3
     cancel = threading.Event()
     stream = translate(parsed(), translator, cancel)
-    assert isinstance(next(stream), Started) and isinstance(next(stream), ActionDone)
+    assert isinstance(next(stream), TranslationStarted) and isinstance(next(stream), ActionDone)
     cancel.set()
     assert [type(e) for e in stream] == [StepDone]  # the step under way is closed, nothing more is reduced
 
@@ -122,7 +122,7 @@ def test_run_parses_first():
     text = "Put the egg in a bowl."
     events = list(run(text, ScriptedSpans({text: SPANS[text]}), ScriptedDependencies(), translator))
     assert isinstance(events[0], Parsed) and events[0].recipe.steps[0].frames[0].name == "put"
-    assert isinstance(events[1], Started) and isinstance(events[-1], Finished)
+    assert isinstance(events[1], TranslationStarted) and isinstance(events[-1], TranslationFinished)
 
 
 def test_json_has_spot_formulas_and_stats(library):

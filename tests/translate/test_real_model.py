@@ -2,28 +2,28 @@
 
 import pytest
 
+from cook2ltl.assembly.backends import DEFAULT_MODEL, load_model
+from cook2ltl.assembly.manifest import ModelState, load_manifest, state_of
+from cook2ltl.domain.actions import Source
 from cook2ltl.library import Library
 from cook2ltl.ltl import to_spot
-from cook2ltl.assembly.manifest import State, load_manifest, state_of
 from cook2ltl.parse import parse_recipe
+from cook2ltl.pipeline.records import TranslationFinished
 from cook2ltl.pipeline.translator import Translator, translate
-from cook2ltl.pipeline.records import Finished
-from cook2ltl.assembly.backends import DEFAULT_MODEL, load_model
-from cook2ltl.domain.actions import Source
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 
 
 def test_refrigerate_the_apple_with_the_default_model(tmp_path):
-    if state_of(load_manifest()[DEFAULT_MODEL], verify_hash=False) != State.READY:
+    if state_of(load_manifest()[DEFAULT_MODEL], verify_hash=False) != ModelState.READY:
         pytest.fail(f"model not provisioned: {DEFAULT_MODEL}; run `make models`")
     text = "Refrigerate the apple."
     parsed = parse_recipe(text, ScriptedSpans({text: [("VERB", "Refrigerate"), ("WHAT", "the apple")]}),
                           ScriptedDependencies())
     library = Library(tmp_path / "library.sqlite")
     translator = Translator(load_primitives("ai2thor"), load_model(), library, settings=ReductionSettings(max_lines=6))
-    translation = [e for e in translate(parsed, translator) if isinstance(e, Finished)][0].translation
+    translation = [e for e in translate(parsed, translator) if isinstance(e, TranslationFinished)][0].translation
     library.close()
     step = translation.steps[0]
     reduction = step.actions[0].reduction

@@ -9,16 +9,21 @@ from dataclasses import replace
 
 import pytest
 
+from cook2ltl.domain.actions import Call
 from cook2ltl.errors import UserError
 from cook2ltl.ltl.ast import TRUE, Atom
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.pipeline.records import Variant
-from cook2ltl.domain.actions import Call
-from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.pipeline.world_rollout import (
-    ActionRolled, Began, Finished, StepRolled, recipe_rollout_json, roll_out_recipe,
+    ActionRolled,
+    Began,
+    RecipeRolledOut,
+    StepRolled,
+    recipe_rollout_json,
+    roll_out_recipe,
 )
+from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.world.kitchens import grounding
 from tests.fakes import ScriptedDependencies, ScriptedSpans
 from tests.reduce.fake_model import ScriptedModel
@@ -48,14 +53,14 @@ def translated(kitchen, text: str = PASTA):
 
 def rolled_out(translation, **options):
     events = list(roll_out_recipe(translation, PRIMITIVES, **options))
-    return events, next((e.rollout for e in events if isinstance(e, Finished)), None)
+    return events, next((e.rollout for e in events if isinstance(e, RecipeRolledOut)), None)
 
 
 def test_step_two_finds_what_step_one_left_and_the_formula_is_satisfied(kitchen):
     translation = translated(kitchen)
     events, rollout = rolled_out(translation)
     assert isinstance(events[0], Began) and (events[0].steps, events[0].actions) == (2, 2)
-    assert [type(e) for e in events[1:]] == [ActionRolled, StepRolled, ActionRolled, StepRolled, Finished]
+    assert [type(e) for e in events[1:]] == [ActionRolled, StepRolled, ActionRolled, StepRolled, RecipeRolledOut]
     cook, drain = (step.actions[0] for step in rollout.steps)
     assert [line.call.text() for line in cook.lines][-1] == "wait(pasta == cooked)"
     assert ("cooked", "pasta") in cook.lines[-1].added and Atom("cooked", ("pasta",)) in cook.lines[-1].facts

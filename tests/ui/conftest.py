@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.ui.app import Cook2LTLApp
 from cook2ltl.ui.services import Services

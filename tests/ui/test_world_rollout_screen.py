@@ -9,7 +9,10 @@ from textual.widgets import Input, Select
 
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.ui.messages import (
-    RecipeActionRolled, RecipeRolloutBegan, RecipeRolloutDone, RecipeStepRolled,
+    RecipeActionRolled,
+    RecipeRolloutBegan,
+    RecipeRolloutDone,
+    RecipeStepRolled,
 )
 from cook2ltl.ui.screens.dialogs import PathDialog
 from cook2ltl.ui.screens.rollout import FILE, WORLD, RolloutScreen

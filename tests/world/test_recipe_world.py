@@ -5,8 +5,9 @@ import random
 
 import pytest
 
-from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.domain.actions import Action, Call, Parameter
+from cook2ltl.pipeline.records import Variant
+from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.world.affordances import admissible_calls
 from cook2ltl.world.check import PLANNER, check_plan
@@ -135,7 +136,7 @@ def test_a_recipe_runs_in_one_state_and_lines_are_chosen_among_those_the_world_a
 
     model = ScriptedModel({"preheat": "pick_up(oven)\nturn_on(oven)\nwait(oven == hot)",
                            "bake": "open(oven)\npick_up(cake)\nput(cake, oven)"})
-    translator = Translator(PRIMITIVES, model, None, grounding=kitchen, variant=__import__("cook2ltl.pipeline.translator").pipeline.Variant.AR)
+    translator = Translator(PRIMITIVES, model, None, grounding=kitchen, variant=Variant.AR)
     events = list(translate(parse_recipe(RECIPE, ScriptedSpans(SPANS), ScriptedDependencies()), translator))
     steps = events[-1].translation.steps
     preheat, bake = steps[0].actions[0], steps[1].actions[0]
@@ -176,10 +177,10 @@ def test_an_action_the_recipe_forbids_is_checked_but_leaves_the_kitchen_as_it_wa
 
 
 def test_an_action_whose_effect_already_holds_needs_no_plan_and_teaches_nothing(kitchen, tmp_path):
+    from cook2ltl.domain.actions import Source
     from cook2ltl.library.store import Library
     from cook2ltl.parse import parse_recipe
     from cook2ltl.pipeline.records import Variant
-    from cook2ltl.domain.actions import Source
 
     text = "Preheat the oven. Heat the oven."
     spans = {"Preheat the oven.": SPANS["Preheat the oven."], "Heat the oven.": [("VERB", "Heat"), ("WHAT", "the oven")]}

@@ -25,14 +25,14 @@ pytest.importorskip("ai2thor")
 
 from cook2ltl.execution.executor import execute  # noqa: E402
 from cook2ltl.execution.launcher import start_embedded  # noqa: E402
-from cook2ltl.world.thor_names import Binding, UnknownObject, objects_named  # noqa: E402
-from cook2ltl.thor_types import load_type_rules  # noqa: E402
-from cook2ltl.simulator.scenes import load_scene  # noqa: E402
-from cook2ltl.simulator.metadata import objects_metadata  # noqa: E402
 from cook2ltl.ltl.ast import Atom  # noqa: E402
+from cook2ltl.simulator.metadata import objects_metadata  # noqa: E402
+from cook2ltl.simulator.scenes import load_scene  # noqa: E402
+from cook2ltl.thor_types import load_type_rules  # noqa: E402
 from cook2ltl.world.logic import State, applicable, successor  # noqa: E402
 from cook2ltl.world.pddl import load_domain, read_with_unified_planning  # noqa: E402
 from cook2ltl.world.thor import thor_state  # noqa: E402
+from cook2ltl.world.thor_names import Binding, UnknownObject, objects_named  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 DOMAIN = ROOT / "assets" / "domains" / "ai2thor.pddl"

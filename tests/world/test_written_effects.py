@@ -5,8 +5,8 @@ import pytest
 
 from cook2ltl.library.store import Library
 from cook2ltl.parse import parse_recipe
-from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.pipeline.records import Variant
+from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.reduce.effect_writer import effect_prompt, write_effect
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.world.effects import verb_table

@@ -5,11 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from cook2ltl import paths
+from cook2ltl.assembly.manifest import ModelState, load_manifest, model_path, state_of
 from cook2ltl.domain.recipe import Label
 from cook2ltl.domain.settings import Settings
 from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
-from cook2ltl.assembly.manifest import State, load_manifest, model_path, state_of
 from cook2ltl.parse.gliner_spans import GlinerSpans, checkpoint_label_names
 from cook2ltl.parse.spacy_dependencies import SpacyDependencies
 from cook2ltl.reduce.llm import LlamaModel
@@ -33,7 +33,7 @@ def span_extractor(settings: Settings) -> GlinerSpans:
 
 def dependency_parser() -> SpacyDependencies:
     entry = load_manifest()[DEPENDENCY_MODEL]
-    if state_of(entry, verify_hash=False) != State.READY:
+    if state_of(entry, verify_hash=False) != ModelState.READY:
         raise _not_provisioned(DEPENDENCY_MODEL)
     return SpacyDependencies(entry.module)
 
@@ -45,7 +45,7 @@ def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
     entry = manifest.get(name)
     if entry is None or name not in choices:
         raise UserError(f"No language model {name!r} in the model manifest.", f"choose one of: {', '.join(choices)}.")
-    if state_of(entry, verify_hash=False) != State.READY:
+    if state_of(entry, verify_hash=False) != ModelState.READY:
         raise UserError(f"The model {name!r} is not provisioned.", "run `make models` (or `cook2ltl models provision`).")
     return LlamaModel(name, model_path(entry), state_dir=paths.model_cache_dir() / "prompt-states",
                       time_limit=load_settings().limits.llm_seconds)
@@ -53,7 +53,7 @@ def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
 
 def _provisioned(name: str) -> Path:
     entry = load_manifest()[name]
-    if state_of(entry, verify_hash=False) != State.READY:
+    if state_of(entry, verify_hash=False) != ModelState.READY:
         raise _not_provisioned(name)
     return model_path(entry)
 

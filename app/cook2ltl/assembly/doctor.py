@@ -15,8 +15,8 @@ from pathlib import Path
 from typing import Callable, Iterator
 
 from cook2ltl import offline
+from cook2ltl.assembly.manifest import ModelSource, ModelState, load_manifest, model_path, state_of
 from cook2ltl.errors import UserError
-from cook2ltl.assembly.manifest import Source, State, load_manifest, model_path, state_of
 
 FIX_MODELS = "make models"
 FIX_INSTALL = "make install"
@@ -44,8 +44,9 @@ def run_checks() -> Iterator[Check]:
     for entry in manifest.values():
         state = state_of(entry)
         detail = f"{state.value}: {model_path(entry)}"
-        yield Check(f"model {entry.name}", state == State.READY, detail, "" if state == State.READY else FIX_MODELS)
-        if state == State.READY:
+        ready = state == ModelState.READY
+        yield Check(f"model {entry.name}", ready, detail, "" if ready else FIX_MODELS)
+        if state == ModelState.READY:
             yield _check(f"smoke {entry.name}", lambda: _SMOKE[entry.source](entry), FIX_MODELS)
 
 
@@ -179,8 +180,8 @@ def _smoke_gguf(entry) -> str:
 
 
 _SMOKE = {
-    Source.PIP: _smoke_package,
-    Source.TRAIN: _smoke_span_model,
-    Source.WHEEL: _smoke_gguf,
-    Source.SPLIT_WHEELS: _smoke_gguf,
+    ModelSource.PIP: _smoke_package,
+    ModelSource.TRAIN: _smoke_span_model,
+    ModelSource.WHEEL: _smoke_gguf,
+    ModelSource.SPLIT_WHEELS: _smoke_gguf,
 }

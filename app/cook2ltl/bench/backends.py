@@ -18,8 +18,8 @@ class Parsers:
 
 @cache
 def parsers() -> Parsers:
-    from cook2ltl.domain.settings_file import load_settings
     from cook2ltl.assembly.backends import dependency_parser, span_extractor
+    from cook2ltl.domain.settings_file import load_settings
 
     started = time.perf_counter()
     spans, dependencies = span_extractor(load_settings()), dependency_parser()

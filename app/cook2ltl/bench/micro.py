@@ -53,9 +53,9 @@ def span_model(sentences: list[str]) -> dict:
 def language_model(name: str, count: int) -> dict:
     """Seconds per reduction and tokens per second over the first `count` actions of REDUCTIONS (the first
     one apart when there are more: it also evaluates the static prompt prefix, or restores it from disk)."""
-    from cook2ltl.reduce.action import parameter
     from cook2ltl.assembly.backends import load_model
     from cook2ltl.domain.actions import Action
+    from cook2ltl.reduce.action import parameter
     from cook2ltl.reduce.primitives import load_primitives
     from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 
@@ -82,10 +82,9 @@ def language_model(name: str, count: int) -> dict:
 
 def kitchen_actions(task_ids: tuple[str, ...]) -> dict:
     """Seconds per executed action of the tasks' hand-written plans in the embedded kitchen (no model)."""
+    from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
     from cook2ltl.execution.launcher import start_embedded
     from cook2ltl.execution.tasks import find_task
-    from cook2ltl.assembly.trial import reference_formula
-    from cook2ltl.assembly.trial import TrialDone, run_trial
 
     started = time.perf_counter()
     kitchen = start_embedded("FloorPlan1")

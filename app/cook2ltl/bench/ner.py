@@ -123,9 +123,9 @@ def report_json(report: Report, milliseconds: float) -> dict:
 
 
 def run_ner(smoke: bool, out: Path, echo: Callable[[str], None]) -> dict:
-    from cook2ltl.bench.backends import parsers
-    from cook2ltl.assembly.manifest import load_manifest
     from cook2ltl.assembly.backends import SPAN_MODEL
+    from cook2ltl.assembly.manifest import load_manifest
+    from cook2ltl.bench.backends import parsers
 
     training, held_out = split(paths.models_dir() / load_manifest()[SPAN_MODEL].data)
     recipe = SpacyRecipe(epochs=1) if smoke else SpacyRecipe()

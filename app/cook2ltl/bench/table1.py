@@ -33,15 +33,15 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from cook2ltl import paths
+from cook2ltl.assembly.translators import TranslateOptions, build_translator
 from cook2ltl.bench.refusals import refusals, refusals_note
 from cook2ltl.bench.results import pm, write
+from cook2ltl.domain.actions import Source
 from cook2ltl.domain.recipe import ParsedRecipe
 from cook2ltl.errors import UserError
-from cook2ltl.assembly.translators import TranslateOptions, build_translator
-from cook2ltl.pipeline.translator import Translator, translate
-from cook2ltl.pipeline.records import Finished, Translation, Variant
 from cook2ltl.pipeline.rates import rates
-from cook2ltl.domain.actions import Source
+from cook2ltl.pipeline.records import Translation, TranslationFinished, Variant
+from cook2ltl.pipeline.translator import Translator, translate
 from cook2ltl.reduce.validation import PlanValidator
 
 RECIPES_FILE = "eval_recipes_50.csv"
@@ -103,8 +103,8 @@ def parse_all(recipes: list[tuple[str, str]]) -> Stage:
 def library_bound(stage: Stage, primitives) -> dict:
     """What bounds AR+𝔸's calls: the library is keyed by verb and signature, so every distinct key among the
     actions that are not passed through as primitives costs at least one call, however good the model."""
-    from cook2ltl.reduce.action import actions_of
     from cook2ltl.formulas.formula import direct_calls
+    from cook2ltl.reduce.action import actions_of
 
     actions = [a for recipe in stage.recipes for step in recipe.steps for frame in step.frames
                for a in actions_of(frame)]
@@ -133,7 +133,7 @@ def run_variant(stage: Stage, translator: Translator, progress: Callable[[dict],
     totals: dict[str, float] = {"admissible": 0, "inadmissible": 0, "check_seconds": 0.0}
     translations, per_recipe = [], []
     for number, recipe in zip(stage.numbers, stage.recipes):
-        translation = next(e.translation for e in translate(recipe, translator) if isinstance(e, Finished))
+        translation = next(e.translation for e in translate(recipe, translator) if isinstance(e, TranslationFinished))
         translations.append(translation)
         admissible, inadmissible = plan_admissibility(translation)
         totals["admissible"] += admissible

@@ -56,8 +56,8 @@ def choose_tasks(which: str):
 
 def run_task(kitchen, planner, task) -> dict:
     """Plan the task's instruction, roll the plan out, check the goal."""
-    from cook2ltl.execution.tasks import set_up
     from cook2ltl.assembly.trial import TrialDone, explain, run_trial
+    from cook2ltl.execution.tasks import set_up
 
     kitchen.reset(task.scene)
     set_up(kitchen, task)  # the world model starts from the kitchen as the task leaves it (a dirty mug)
@@ -80,14 +80,14 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
                  repairs: int | None = None, ground: bool = False) -> dict:
     """Every task `runs` consecutive times with one planner and one library; each run's outcome. With
     `repairs`, new plans are checked in the kitchen and repaired that many times at most."""
-    from cook2ltl.bench.backends import parsers
-    from cook2ltl.execution.launcher import start_embedded
-    from cook2ltl.assembly.planning import PRIMITIVES, Planner
-    from cook2ltl.library import Library
-    from cook2ltl.assembly.translators import TranslateOptions, build_translator
     from cook2ltl.assembly.backends import load_model
-    from cook2ltl.reduce.primitives import load_primitives
+    from cook2ltl.assembly.planning import PRIMITIVES, TaskPlanner
+    from cook2ltl.assembly.translators import TranslateOptions, build_translator
+    from cook2ltl.bench.backends import parsers
     from cook2ltl.execution.kitchen_check import KitchenValidator
+    from cook2ltl.execution.launcher import start_embedded
+    from cook2ltl.library import Library
+    from cook2ltl.reduce.primitives import load_primitives
 
     results: dict[str, list[dict]] = {}
     started = time.perf_counter()
@@ -102,7 +102,7 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
         # Without repairs the benchmark measures the plans as written: no kitchen check either.
         options = TranslateOptions(variant, check=repairs is not None, repairs=repairs or 0, ground=False)
         translator = build_translator(primitives, language_model, library, options, lambda _: validator, echo)
-        planner = Planner(translator, backends.spans, backends.dependencies, ground)
+        planner = TaskPlanner(translator, backends.spans, backends.dependencies, ground)
         kitchen = start_embedded("FloorPlan1")
         try:
             for task in tasks:

@@ -15,6 +15,7 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
+from cook2ltl.reduce.validation import CheckStatus
 from cook2ltl.text_safety import literal, styled, terminal
 
 library_app = typer.Typer(help="Review the action library: list, show, approve, reject, edit, history, undo, "
@@ -23,7 +24,7 @@ LibraryOption = typer.Option(None, "--library", help="Action library file (defau
                                                      "else library.sqlite in the user data folder).")
 ByOption = typer.Option(None, "--by", help="Who makes the change (default: $COOK2LTL_USER, else the login name).")
 STATUS_STYLE = {"pending": "yellow", "approved": "green", "rejected": "dim"}
-CHECK_STYLE = {"passed": "green", "failed": "bold red", "unchecked": "dim"}
+CHECK_STYLE = {CheckStatus.PASSED: "green", CheckStatus.FAILED: "bold red", CheckStatus.UNCHECKED: "dim"}
 
 
 def _open(library: Path | None, read_only: bool = False):
@@ -160,10 +161,10 @@ def edit_command(entry_id: int,
             errors.print(styled(("✗", "bold red"), " ", problem))
         errors.print(f"nothing saved: entry {entry_id} keeps version {entry.version}")
         raise typer.Exit(2)
-    checked = _kitchen_check(entry, body, primitive_set, verbs) if validate else Recheck("unchecked", ())
+    checked = _kitchen_check(entry, body, primitive_set, verbs) if validate else Recheck(CheckStatus.UNCHECKED, ())
     for problem in checked.problems:
         console.print(styled("  ", ("✗", "red"), " ", problem))
-    if checked.validation == "failed" and not keep_failing:
+    if checked.validation == CheckStatus.FAILED and not keep_failing:
         errors.print(styled(("the body fails the kitchen check", "bold red"),
                             "; nothing saved (--keep-failing saves it anyway)"))
         raise typer.Exit(1)
@@ -221,12 +222,13 @@ def _primitive_set(choice: str, name: str):
 
 
 def _kitchen_check(entry, body, primitive_set, verbs):
-    from cook2ltl.library.recheck import Recheck, recheck
     from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
+    from cook2ltl.library.recheck import Recheck, recheck
 
     missing = unsupported(primitive_set)
     if missing:
-        return Recheck("unchecked", (f"not checked in the kitchen: it has no action for {', '.join(missing)}",))
+        problem = f"not checked in the kitchen: it has no action for {', '.join(missing)}"
+        return Recheck(CheckStatus.UNCHECKED, (problem,))
     with (terminal(stderr=True).status("running the body in the kitchen …"),
           KitchenValidator(primitive_set) as kitchen):
         return recheck(entry, body, primitive_set, verbs, kitchen)

@@ -13,11 +13,11 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from rich.table import Table
 
 from cook2ltl import paths
-from cook2ltl.assembly.manifest import State, load_manifest, state_of
+from cook2ltl.assembly.manifest import ModelState, load_manifest, state_of
 from cook2ltl.text_safety import literal, styled, terminal, visible
 
 models_app = typer.Typer(help="List, provision and evaluate the models.", invoke_without_command=True, no_args_is_help=False)
-STATE_STYLE = {State.READY: "green", State.MISSING: "yellow", State.CORRUPT: "bold red"}
+STATE_STYLE = {ModelState.READY: "green", ModelState.MISSING: "yellow", ModelState.CORRUPT: "bold red"}
 
 
 @models_app.callback()
@@ -90,9 +90,9 @@ def eval_ner_command(
     """Strict span micro-F1 on the held-out recipes, overall and per label."""
     from dataclasses import replace
 
-    from cook2ltl.parse.training.validate import validate
-    from cook2ltl.domain.settings_file import load_settings
     from cook2ltl.assembly.backends import SPAN_MODEL, span_extractor
+    from cook2ltl.domain.settings_file import load_settings
+    from cook2ltl.parse.training.validate import validate
 
     settings = load_settings()
     if checkpoint:

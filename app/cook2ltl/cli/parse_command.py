@@ -27,10 +27,10 @@ def parse_command(
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
     """Split a recipe into steps and parse each into Verb(What, Where, How, Time, Temperature) frames."""
+    from cook2ltl.assembly.backends import dependency_parser, span_extractor
+    from cook2ltl.domain.settings_file import load_settings
     from cook2ltl.parse import parse_recipe
     from cook2ltl.parse.serialize import recipe_json
-    from cook2ltl.domain.settings_file import load_settings
-    from cook2ltl.assembly.backends import dependency_parser, span_extractor
 
     text = read_recipe(recipe)
     spans, dependencies = span_extractor(load_settings()), dependency_parser()

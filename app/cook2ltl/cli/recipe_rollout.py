@@ -35,13 +35,19 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
                    validate: bool | None, repairs: int | None, ground: bool, as_json: bool) -> NoReturn:
     """Translate the recipe with the world model on, roll it out, and exit 0 when every step reached its
     actions' effects and the formula holds, else 1."""
-    from cook2ltl.preprocess.recipe_file import read_recipe
-    from cook2ltl.cli.translating import open_translator, translated
-    from cook2ltl.reduce.primitives import load_primitives
     from cook2ltl.assembly.translators import TranslateOptions
+    from cook2ltl.cli.translating import open_translator, translated
     from cook2ltl.pipeline.world_rollout import (
-        NO_WORLD_HINT, ActionRolled, Began, Finished, StepRolled, recipe_rollout_json, roll_out_recipe,
+        NO_WORLD_HINT,
+        ActionRolled,
+        Began,
+        RecipeRolledOut,
+        StepRolled,
+        recipe_rollout_json,
+        roll_out_recipe,
     )
+    from cook2ltl.preprocess.recipe_file import read_recipe
+    from cook2ltl.reduce.primitives import load_primitives
 
     if not ground:
         raise UserError("A recipe rollout runs the recipe in the world model; --no-ground turns it off.",
@@ -57,7 +63,7 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
     console = None if as_json else terminal()
     rollout = None
     for event in roll_out_recipe(translation, chosen, translator.grounding.world):
-        if isinstance(event, Finished):
+        if isinstance(event, RecipeRolledOut):
             rollout = event.rollout
         elif console is None:
             continue

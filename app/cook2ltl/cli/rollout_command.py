@@ -12,10 +12,10 @@ import typer
 from rich.console import Console
 
 from cook2ltl import paths
+from cook2ltl.assembly.backends import DEFAULT_MODEL
 from cook2ltl.cli.recipe_rollout import is_recipe, rollout_recipe
 from cook2ltl.errors import UserError
 from cook2ltl.pipeline.records import Variant
-from cook2ltl.assembly.backends import DEFAULT_MODEL
 from cook2ltl.text_safety import json_text, literal, styled, terminal
 
 DEFAULT_SCENE = "FloorPlan1"
@@ -63,11 +63,11 @@ def rollout_command(
     Exits with 0 when the task's goal holds at the end (for a formula: when the formula does; for a recipe: when
     every step reached its effects and the formula holds), else 1.
     """
-    from cook2ltl.execution.launcher import start_kitchen
     from cook2ltl.assembly.planning import open_planner
-    from cook2ltl.execution.tasks import set_up
     from cook2ltl.assembly.trial import TrialDone, run_trial, trial_json
     from cook2ltl.domain.settings_file import load_settings
+    from cook2ltl.execution.launcher import start_kitchen
+    from cook2ltl.execution.tasks import set_up
 
     library = paths.user_path(library, "--library") if library else None
     if list_tasks:
@@ -119,8 +119,8 @@ def rollout_command(
 
 def read_target(target: str, reference: bool):
     """(task or None, formula or None): a task is planned later unless its reference plan is asked for."""
-    from cook2ltl.execution.tasks import find_task, load_tasks
     from cook2ltl.assembly.trial import reference_formula
+    from cook2ltl.execution.tasks import find_task, load_tasks
     from cook2ltl.ltl.parser import LTLSyntaxError, parse
 
     task = find_task(target)
@@ -184,10 +184,10 @@ def show_header(console: Console, task, plan, formula, scene: str, backend: str)
 
 def show_event(console: Console, event, atoms: int) -> None:
     """One rollout event as it happens; `atoms` is how many atoms the formula has."""
-    from cook2ltl.execution.rollout import ActionRefused, Started, Stepped
+    from cook2ltl.execution.rollout import ActionRefused, RolloutStarted, Stepped
     from cook2ltl.ltl.printer import to_unicode
 
-    if isinstance(event, Started) and event.unobservable:
+    if isinstance(event, RolloutStarted) and event.unobservable:
         never = ", ".join(a.text for a in event.unobservable)
         console.print(literal(f"the kitchen cannot report {never}: it never holds", "yellow"), highlight=False)
     elif isinstance(event, ActionRefused):

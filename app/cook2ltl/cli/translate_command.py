@@ -9,10 +9,11 @@ import typer
 from rich.console import Console
 
 from cook2ltl import paths
-from cook2ltl.preprocess.recipe_file import read_recipe
-from cook2ltl.pipeline.records import Translation, Variant
 from cook2ltl.assembly.backends import DEFAULT_MODEL
+from cook2ltl.pipeline.records import Translation, Variant
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import json_text, terminal
+
 
 def translate_command(
     recipe: str = typer.Argument(..., help="Recipe text file, or - for standard input."),
@@ -44,10 +45,10 @@ def translate_command(
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
     from cook2ltl.assembly.translators import TranslateOptions
     from cook2ltl.cli.translating import open_translator, translated
-    from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.reduce.reduction import ReductionSettings
     from cook2ltl.pipeline.report import show
     from cook2ltl.pipeline.serialize import translation_json
+    from cook2ltl.reduce.primitives import load_primitives
+    from cook2ltl.reduce.reduction import ReductionSettings
 
     library = paths.user_path(library, "--library") if library else None
     pddl = paths.output_folder(pddl, "--pddl") if pddl else None  # made now: a bad folder fails before the run

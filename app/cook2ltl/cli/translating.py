@@ -11,10 +11,10 @@ import typer
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-from cook2ltl.pipeline.translator import Translator
 from cook2ltl.assembly.translators import TranslateOptions
-from cook2ltl.pipeline.records import ActionDone, Finished, Started, Translation
 from cook2ltl.domain.actions import PrimitiveSet
+from cook2ltl.pipeline.records import ActionDone, Translation, TranslationFinished, TranslationStarted
+from cook2ltl.pipeline.translator import Translator
 from cook2ltl.text_safety import literal, visible
 
 
@@ -34,9 +34,9 @@ def open_translator(primitives: PrimitiveSet, model: str, library: Path | None, 
 
 def translated(text: str, translator: Translator, errors: Console) -> Translation:
     """The recipe parsed and translated, its progress drawn on `errors`; exit 130 if stopped before the end."""
-    from cook2ltl.pipeline.translator import run
-    from cook2ltl.domain.settings_file import load_settings
     from cook2ltl.assembly.backends import dependency_parser, span_extractor
+    from cook2ltl.domain.settings_file import load_settings
+    from cook2ltl.pipeline.translator import run
 
     events = run(text, span_extractor(load_settings()), dependency_parser(), translator)
     columns = (TextColumn("{task.description}", markup=False), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
@@ -44,12 +44,12 @@ def translated(text: str, translator: Translator, errors: Console) -> Translatio
     with Progress(*columns, console=errors, transient=True, disable=not errors.is_terminal) as progress:
         task = progress.add_task("parsing", total=None)
         for event in events:
-            if isinstance(event, Started):
+            if isinstance(event, TranslationStarted):
                 progress.update(task, total=event.actions, description="reducing")
             elif isinstance(event, ActionDone):
                 reduction = event.result.reduction
                 progress.update(task, completed=event.done,
                                 description=visible(f"{reduction.action.text()} ({reduction.source.value})"))
-            elif isinstance(event, Finished):
+            elif isinstance(event, TranslationFinished):
                 return event.translation
     raise typer.Exit(130)  # stopped before the end

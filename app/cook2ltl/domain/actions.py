@@ -8,6 +8,7 @@ from pathlib import Path
 
 CONDITION = "condition"  # the one parameter kind that is not an object: `subject == state` (wait)
 TIMER = "timer"  # the subject of a duration: wait(timer == 30_minutes)
+WAIT = "wait"  # the primitive that lets time pass until its condition holds: wait(potato == hot)
 
 
 @dataclass(frozen=True)
@@ -49,6 +50,9 @@ class PrimitiveSet:
     examples: str
     source: Path
     world: WorldSpec | None = None  # the set's world model, when its file names one
+    # What each primitive does in an AI2-THOR kitchen, for the kitchen check: (primitive, an AI2-THOR
+    # primitive or touch or pour); a primitive the AI2-THOR set also has does itself.
+    in_thor: tuple[tuple[str, str], ...] = ()
 
     def get(self, name: str) -> Primitive | None:
         return next((primitive for primitive in self.primitives if primitive.name == name), None)

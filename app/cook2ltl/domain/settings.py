@@ -29,6 +29,7 @@ from pathlib import Path
 
 from cook2ltl.domain.recipe import Label
 
+
 @dataclass(frozen=True)
 class NerSettings:
     checkpoint: Path | None = None

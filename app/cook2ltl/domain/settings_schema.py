@@ -9,8 +9,8 @@ from typing import Annotated
 from pydantic import Field, StringConstraints
 
 from cook2ltl.domain.recipe import Label
-from cook2ltl.paths import shown, user_path
 from cook2ltl.domain.settings import Limits, NerSettings, Settings, TranslateSettings
+from cook2ltl.paths import shown, user_path
 from cook2ltl.toml_models import FileName, PathText, Table, Text, flag, number, validated, whole_number
 
 HINT = "see the README's settings sections; a key left out takes its default."

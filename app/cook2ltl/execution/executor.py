@@ -22,8 +22,10 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any, Protocol
 
-from cook2ltl.thor_types import liquids
+from cook2ltl.domain.actions import WAIT, PrimitiveSet
 from cook2ltl.ltl.ast import Atom
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.thor_types import liquids
 from cook2ltl.world.thor_names import Binding, Obj, UnknownObject, by_id, held, objects_named, resolve
 
 # Primitives of assets/primitives/ai2thor.toml that are one THOR interaction with their first argument.
@@ -40,9 +42,14 @@ INTERACTIONS = {
     "empty": "EmptyLiquidFromObject",
 }
 TOGGLES = ("ToggleObjectOn", "ToggleObjectOff")
-# The rest: put(what, where), drop(what) and fill(what, liquid) need the hand or a liquid; wait lets time pass.
-PRIMITIVES = frozenset(INTERACTIONS) | {"put", "drop", "fill", "wait"}
-WAIT = "wait"
+# The rest need more than one THOR call: put(what, where), drop(what) and fill(what, liquid) need the hand or
+# a liquid; wait lets time pass. A test holds these against the set's file.
+COMPOSED = ("put", "drop", "fill", WAIT)
+
+
+def thor_primitives() -> PrimitiveSet:
+    """The primitive set this executor runs: its names and parameters are assets/primitives/ai2thor.toml's."""
+    return load_primitives("ai2thor")
 
 
 class Kitchen(Protocol):

@@ -15,10 +15,10 @@ microwave: hot, refrigerate: cold; `plan_run.VERB_GOALS`), must leave its first 
 `pick_up(tomato)` alone does not pass for chopping it. States the kitchen cannot see (boiled, golden,
 thick) and timers are not checked.
 
-Both shipped primitive sets run: the ai2thor set as THOR actions, and the recipe set through `MEANING`
-(cut → SliceObject, remove → PickupObject, stir / shake / taste / turn touch an object that must be
-within reach, pour fills with a liquid or needs the poured thing in hand). A set with other primitives
-cannot be checked (`unsupported`).
+Both shipped primitive sets run: the ai2thor set as THOR actions, and any other set through its file's
+`[thor]` table (recipe.toml: cut → slice, remove → pick_up, stir / shake / taste / turn touch an object
+that must be within reach, pour fills with a liquid or needs the poured thing in hand; put, open, wait…
+are the AI2-THOR set's own). A set with other primitives cannot be checked (`unsupported`).
 """
 
 from __future__ import annotations
@@ -27,13 +27,14 @@ import time
 
 from cook2ltl.domain.actions import Action, Call, PrimitiveSet
 from cook2ltl.errors import UserError
-from cook2ltl.execution.plan_run import MEANING, PlanRun
+from cook2ltl.execution.plan_run import PlanRun, meanings
 from cook2ltl.reduce.validation import LineProblem, RecipeSoFar, Validation
 
 
 def unsupported(primitives: PrimitiveSet) -> tuple[str, ...]:
     """The primitives of a set the kitchen cannot run (empty for the shipped sets)."""
-    return tuple(p.name for p in primitives.primitives if p.name not in MEANING)
+    runnable = meanings(primitives)
+    return tuple(p.name for p in primitives.primitives if p.name not in runnable)
 
 
 class KitchenValidator:
@@ -45,23 +46,24 @@ class KitchenValidator:
             raise UserError(f"The kitchen cannot check plans of the primitive set {primitives.name!r}: it has no "
                             f"action for {', '.join(missing)}.", "translate with --no-validate.")
         self.primitives = primitives
+        self._meaning = meanings(primitives)
         self._controller = None
 
     def validate(self, action: Action, plan: tuple[Call, ...], so_far: RecipeSoFar | None = None) -> Validation:
         """The plan run alone, in the kitchen that fits it best with its shut-away things set out, or, given
         `so_far`, after the recipe's earlier lines in the recipe's own kitchen."""
         from cook2ltl.thor_types import liquids
-        from cook2ltl.world.stand_ins import Frame, build_frame
+        from cook2ltl.world.stand_ins import Casting, build_frame
 
         started = time.perf_counter()
-        frame = build_frame(plan, liquids()) if so_far is None else Frame(so_far.scene, so_far.binding)
+        frame = build_frame(plan, liquids()) if so_far is None else Casting(so_far.scene, so_far.binding)
         if frame.missing:
             problem = LineProblem(0, action.text(), f"not checked: the THOR kitchen has nothing that can stand for "
                                                     f"{', '.join(frame.missing)}")
             return Validation(False, (problem,), frame.scene, time.perf_counter() - started, checked=False)
         kitchen = self._kitchen()
         kitchen.reset(frame.scene)
-        problems = PlanRun(kitchen, frame).run(action, plan, None if so_far is None else so_far.before)
+        problems = PlanRun(kitchen, frame, self._meaning).run(action, plan, None if so_far is None else so_far.before)
         return Validation(not problems, problems, frame.scene, time.perf_counter() - started)
 
     def close(self) -> None:

@@ -9,14 +9,14 @@ from __future__ import annotations
 
 import re
 
+from cook2ltl.domain.actions import TIMER, WAIT, Action, Call, Primitive, PrimitiveSet
+from cook2ltl.execution.executor import Kitchen, execute, send, thor_primitives
+from cook2ltl.ltl.ast import Atom
+from cook2ltl.reduce.validation import LineProblem
 from cook2ltl.thor_types import liquids
-from cook2ltl.execution.executor import Kitchen, execute, send
+from cook2ltl.world.stand_ins import Casting, plan_names
 from cook2ltl.world.thor_facts import PREDICATES
 from cook2ltl.world.thor_names import Binding, UnknownObject, held, objects_named, resolve, shut_away, snake_case
-from cook2ltl.ltl.ast import Atom
-from cook2ltl.domain.actions import TIMER, Action, Call
-from cook2ltl.reduce.validation import LineProblem
-from cook2ltl.world.stand_ins import Frame, plan_names
 
 # Cooking verbs and the state they leave their object in, as the kitchen reports it.
 VERB_GOALS = {
@@ -28,17 +28,27 @@ VERB_GOALS = {
 _OBJECT_ID = re.compile(r"\b([A-Z][A-Za-z]*)\|[+-]?[0-9.]+\|[+-]?[0-9.]+\|[+-]?[0-9.]+(?:\|[A-Za-z_0-9]+)*")
 
 MAX_WAITS = 3
-# Primitive name → what it does in the kitchen; names the ai2thor executor runs map to themselves.
-EXECUTED = ("pick_up", "put", "drop", "open", "close", "break", "cook", "slice", "turn_on", "turn_off", "use",
-            "fill", "empty")
-TOUCH, POUR, WAIT = "touch", "pour", "wait"
-MEANING = {**{name: name for name in EXECUTED}, "cut": "slice", "remove": "pick_up", "pour": POUR,
-           "stir": TOUCH, "shake": TOUCH, "taste": TOUCH, "turn": TOUCH, "wait": WAIT}
+# What a line can mean besides an AI2-THOR primitive (a set's [thor] table names them): the object must be
+# within reach; fill with a liquid, or have the poured thing in hand.
+TOUCH, POUR = "touch", "pour"
+
+
+def meanings(primitives: PrimitiveSet) -> dict[str, Primitive | str]:
+    """What each primitive of the set does in the kitchen: the AI2-THOR primitive it runs as, or TOUCH or POUR.
+    A primitive with no meaning the kitchen can run is left out."""
+    thor, declared = thor_primitives(), dict(primitives.in_thor)
+    found: dict[str, Primitive | str] = {}
+    for primitive in primitives.primitives:
+        meaning = declared.get(primitive.name, primitive.name)
+        if meaning in (TOUCH, POUR) or thor.get(meaning) is not None:
+            found[primitive.name] = thor.get(meaning) or meaning
+    return found
 
 
 class PlanRun:
-    def __init__(self, kitchen: Kitchen, frame: Frame) -> None:
+    def __init__(self, kitchen: Kitchen, frame: Casting, meaning: dict[str, Primitive | str]) -> None:
         self.kitchen = kitchen
+        self.meaning = meaning
         self.binding = Binding(frame.bound)
         self.scene = frame.scene
 
@@ -79,17 +89,18 @@ class PlanRun:
                 send(self.kitchen, {**step, "forceAction": True})
 
     def _line(self, call: Call) -> str:
-        meaning = MEANING[call.name]
+        meaning = self.meaning[call.name]
         args = call.args
-        if meaning == WAIT:
-            return self._wait(*args)
         if meaning == TOUCH:
             return self._reach(args[0])
-        if meaning == POUR or (meaning == "put" and args[0] in liquids()):
+        name = meaning if meaning == POUR else meaning.name
+        if name == WAIT:
+            return self._wait(*args)
+        if name == POUR or (name == "put" and args[0] in liquids()):
             return self._fill(args[1], args[0]) if args[0] in liquids() else self._pour(*args)
-        if meaning == "fill":
+        if name == "fill":
             return self._fill(*args)
-        atom = Atom(meaning, args[:1] if call.name == "remove" else args)
+        atom = Atom(name, args[:meaning.object_arity])  # remove(what, where) runs as pick_up(what)
         attempt, self.binding = execute(self.kitchen, atom, self.binding)
         return "" if attempt.success else attempt.error.removeprefix(f"{atom.text}: ")
 

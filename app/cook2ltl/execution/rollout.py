@@ -13,7 +13,7 @@ it reads any formula the translator builds (sequences ◇(a ∧ ◇(b ∧ …)),
   chosen;
 * when nothing makes progress, the agent keeps doing what the left side of an
   Until asks: `wait 𝒰 hot(potato)` waits (THOR's Pass) until the kitchen
-  reports hot(potato), at most `Limits.max_waits` times in a row.
+  reports hot(potato), at most `RolloutLimits.max_waits` times in a row.
 
 Each step of the trace is the action done plus the formula's state predicates
 that hold after it (see `facts`), so progression sees both. A refused action
@@ -29,17 +29,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from enum import StrEnum
 
+from cook2ltl.domain.actions import WAIT
 from cook2ltl.errors import UserError
+from cook2ltl.execution.executor import Attempt, Kitchen, execute, thor_primitives
 from cook2ltl.ltl.ast import FALSE, Atom, Formula, Until, WeakUntil, postorder
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.ltl.progress import Verdict, progress, verdict
 from cook2ltl.thor_types import liquids
-from cook2ltl.execution.executor import INTERACTIONS, PRIMITIVES, WAIT, Attempt, Kitchen, execute
 from cook2ltl.world.thor_facts import observable, true_facts
 from cook2ltl.world.thor_names import Binding, UnknownObject, check_names
-
-# Object arguments per primitive; `wait` takes none in a formula (its condition is the Until's goal).
-ARITY = {**{name: 1 for name in INTERACTIONS}, "put": 2, "drop": 1, "fill": 2, WAIT: 0}
 
 
 class Stop(StrEnum):
@@ -53,7 +51,7 @@ class Stop(StrEnum):
 
 
 @dataclass(frozen=True)
-class Limits:
+class RolloutLimits:
     max_waits: int = 3
     max_steps: int = 100
 
@@ -87,7 +85,7 @@ class Rollout:
 
 
 @dataclass(frozen=True)
-class Started:
+class RolloutStarted:
     formula: Formula
     scene: str
     unobservable: tuple[Atom, ...]
@@ -104,15 +102,16 @@ class Stepped:
 
 
 @dataclass(frozen=True)
-class Finished:
+class RolloutFinished:
     rollout: Rollout
 
 
-Event = Started | ActionRefused | Stepped | Finished
+RolloutEvent = RolloutStarted | ActionRefused | Stepped | RolloutFinished
 
 
-def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = frozenset(), limits: Limits = Limits(),
-            cancel: threading.Event | None = None, binding: Binding = Binding()) -> Iterator[Event]:
+def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = frozenset(),
+            limits: RolloutLimits = RolloutLimits(), cancel: threading.Event | None = None,
+            binding: Binding = Binding()) -> Iterator[RolloutEvent]:
     """Execute `formula` in the kitchen's current scene, yielding after every action.
 
     `preferred` are objectIds to choose when a name fits several objects (the
@@ -124,7 +123,7 @@ def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = froz
     scene = metadata["sceneName"].removesuffix("_physics")
     actions, predicates = check_formula(formula, metadata["objects"], scene, frozenset(binding.objects))
     unobservable = tuple(sorted((p for p in predicates if not observable(p)), key=lambda a: a.key))
-    yield Started(formula, scene, unobservable)
+    yield RolloutStarted(formula, scene, unobservable)
     remaining, waits = formula, 0
     steps: list[TraceStep] = []
     failures: list[Attempt] = []
@@ -157,7 +156,7 @@ def rollout(kitchen: Kitchen, formula: Formula, preferred: frozenset[str] = froz
         met = met | (step & formula.atoms)
         steps.append(TraceStep(len(steps) + 1, done, facts, remaining, verdict(remaining), met))
         yield Stepped(steps[-1])
-    yield Finished(Rollout(formula, scene, tuple(steps), tuple(failures), stop, verdict(remaining), binding,
+    yield RolloutFinished(Rollout(formula, scene, tuple(steps), tuple(failures), stop, verdict(remaining), binding,
                            unobservable, time.perf_counter() - started))
 
 
@@ -188,9 +187,10 @@ def check_formula(formula: Formula, objects, scene: str, bound: frozenset[str] =
                   ) -> tuple[tuple[Atom, ...], frozenset[Atom]]:
     """(the action atoms in the order they appear, the predicate atoms); UserError for what cannot run.
     `bound` names stand for objects already chosen (the world model's `drawer_2`)."""
-    actions = tuple(a for a in in_order(formula) if a.name in PRIMITIVES)
+    primitives = thor_primitives()
+    actions = tuple(a for a in in_order(formula) if primitives.get(a.name) is not None)
     for atom in actions:
-        want = ARITY[atom.name]
+        want = primitives.get(atom.name).object_arity  # wait takes none: its condition is the Until's goal
         if len(atom.args) != want:
             hint = ("wait is the left side of an Until: wait U hot(potato)." if atom.name == WAIT
                     else "see assets/primitives/ai2thor.toml for the primitives and their parameters.")
@@ -218,7 +218,7 @@ def in_order(formula: Formula) -> list[Atom]:
     return list(seen)
 
 
-def _stop(remaining: Formula, done: int, limits: Limits, cancel: threading.Event | None) -> Stop | None:
+def _stop(remaining: Formula, done: int, limits: RolloutLimits, cancel: threading.Event | None) -> Stop | None:
     if remaining is FALSE:
         return Stop.VIOLATED
     if verdict(remaining).holds:

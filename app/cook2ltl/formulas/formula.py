@@ -12,14 +12,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from cook2ltl.domain.actions import TIMER, WAIT, Action, Call, Primitive, PrimitiveSet
 from cook2ltl.domain.recipe import Connective
 from cook2ltl.ltl.ast import TRUE, Atom, Formula
 from cook2ltl.ltl.atoms import AtomProblem, check_atoms
 from cook2ltl.ltl.patterns import Element, all_of, any_of, avoid, hold_until, sequenced_visit, then
-from cook2ltl.domain.actions import TIMER, Action, Call, Primitive, PrimitiveSet
 
 ELAPSED = "elapsed"  # the predicate of a duration: wait(timer == 30_minutes) waits for elapsed(30_minutes)
-WAIT = "wait"
 # Time phrases that bound an action: "until thick", "for 5 minutes", "once melted".
 CONDITION_MARKERS = frozenset({"until", "till", "for", "once", "when"})
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from cook2ltl.reduce.body import bind, instantiate, read_call
 from cook2ltl.domain.actions import PrimitiveSet
+from cook2ltl.reduce.body import bind, instantiate, read_call
 from cook2ltl.reduce.reduction import MAX_PLAN, LibraryVerb, expand
 
 

@@ -9,6 +9,7 @@ from enum import StrEnum
 from cook2ltl.library.faults import reading_rows
 from cook2ltl.library.versions import checked
 from cook2ltl.reduce.body import is_empty
+from cook2ltl.reduce.validation import CheckStatus
 
 NO_PLAN = "(no plan)"  # how an empty body is shown
 
@@ -30,7 +31,7 @@ class LibraryEntry:
     model: str
     prompt_hash: str
     created: str
-    validation: str = "unchecked"  # passed, failed or unchecked: the kitchen check of the current body
+    validation: CheckStatus = CheckStatus.UNCHECKED  # the kitchen check of the current body
     problems: tuple[str, ...] = ()  # that check's messages
     reviewed_by: str | None = None  # who set the current status, and when (None: nobody since the last body)
     reviewed_at: str | None = None
@@ -71,7 +72,7 @@ def from_row(row: dict) -> LibraryEntry:
             signature=tuple(part for part in row["signature"].split(",") if part), body=_text(row["body"]),
             status=Status(row["status"]), model=_text(row["model"]), prompt_hash=row["prompt_hash"],
             created=row["created"],
-            validation=row["validation"], problems=tuple(json.loads(row["problems"])),
+            validation=CheckStatus(row["validation"]), problems=tuple(json.loads(row["problems"])),
             reviewed_by=row["reviewed_by"], reviewed_at=row["reviewed_at"],
             example=tuple(json.loads(row["example"]).items()), version=_whole(row["version"]),
             effect=effect_of(row["effect"]),

@@ -47,6 +47,7 @@ from cook2ltl.library.schema import SCHEMA_VERSION
 from cook2ltl.library.store import Library, LibraryEntry, Status
 from cook2ltl.library.versions import Version, now
 from cook2ltl.paths import shown, user_path
+from cook2ltl.reduce.validation import CheckStatus
 
 ADDED, UNCHANGED, REPLACED, CONFLICT = "added", "unchanged", "replaced", "conflict"
 SQLITE_HEADER = b"SQLite format 3\x00"
@@ -132,7 +133,7 @@ def import_library(library: Library, path: Path, by: str, replace_pending: bool 
 def _refuse_failed_approvals(records: list[Exported], path: Path) -> None:
     for number, record in enumerate(records, start=1):
         entry = record.entry
-        if entry.status == Status.APPROVED and entry.validation == "failed":
+        if entry.status == Status.APPROVED and entry.validation == CheckStatus.FAILED:
             problems = " ".join("; ".join(entry.problems).split())[:200] or "no details"  # on one line
             raise UserError(f"{shown(path)}: entry {number} ({entry.primitives} {entry.action}) is approved but "
                             f"failed the kitchen check: {problems}.",

@@ -13,10 +13,9 @@ import unicodedata
 from dataclasses import dataclass
 from datetime import datetime
 from pathlib import Path
-from typing import Annotated, Literal
+from typing import Annotated
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StringConstraints, ValidationError, \
-    model_validator
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StringConstraints, ValidationError, model_validator
 from pydantic_core import PydanticCustomError
 
 from cook2ltl.errors import UserError
@@ -28,6 +27,7 @@ from cook2ltl.library.store import LibraryEntry, Status
 from cook2ltl.library.versions import Review, Version
 from cook2ltl.paths import shown
 from cook2ltl.reduce.body import is_empty, read_body
+from cook2ltl.reduce.validation import CheckStatus
 
 READABLE = range(2, SCHEMA_VERSION + 1)  # export files this cook2ltl reads
 HINT = "export a library with `cook2ltl library export FILE` to see the format."
@@ -97,8 +97,9 @@ Body = Annotated[str, StringConstraints(max_length=limits.BODY_BYTES), AfterVali
 Message = Annotated[str, StringConstraints(max_length=limits.MESSAGE_CHARS)]
 Problems = Annotated[list[Message], Field(max_length=limits.PROBLEMS)]
 Number = Annotated[int, Field(ge=1, le=limits.VERSION_NUMBER)]
-Validation = Literal["passed", "failed", "unchecked"]
-StatusName = Literal["pending", "approved", "rejected"]
+# The file holds these as text: strict validation would ask for the enums themselves.
+StatusName = Annotated[Status, Field(strict=False)]
+Validation = Annotated[CheckStatus, Field(strict=False)]
 STRICT = ConfigDict(strict=True, frozen=True, extra="ignore")  # fields of later versions are left for them
 
 
@@ -221,7 +222,8 @@ def _entry(raw, where: str) -> Exported:
 
 SAID = {"missing": "is missing", "model_type": "must be a JSON object", "dict_type": "must be a JSON object",
         "list_type": "must be a list", "string_type": "must be a string", "int_type": "must be a whole number",
-        "literal_error": "must be one of {expected}", "none_required": "must be null",
+        "literal_error": "must be one of {expected}", "enum": "must be one of {expected}",
+        "none_required": "must be null",
         "too_short": "must have at least {min_length} item(s)", "too_long": "has more than {max_length:,} items",
         "string_too_long": "is longer than {max_length:,} characters", "less_than_equal": "must be at most {le:,}",
         "greater_than_equal": "must be at least {ge:,}"}

@@ -10,11 +10,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from cook2ltl.domain.actions import Action, Parameter, PrimitiveSet
 from cook2ltl.library.body_check import verb_finder
 from cook2ltl.library.store import Library, LibraryEntry
 from cook2ltl.reduce.body import bind, instantiate
-from cook2ltl.domain.actions import Action, Parameter, PrimitiveSet
 from cook2ltl.reduce.reduction import LibraryVerb, expand
+from cook2ltl.reduce.validation import CheckStatus
 
 NO_EXAMPLE = ("not checked in the kitchen: the entry has no example values to fill its placeholders "
               "(it was learnt before cook2ltl kept them)")
@@ -22,7 +23,7 @@ NO_EXAMPLE = ("not checked in the kitchen: the entry has no example values to fi
 
 @dataclass(frozen=True)
 class Recheck:
-    validation: str  # passed, failed or unchecked, as the library stores it
+    validation: CheckStatus
     problems: tuple[str, ...]  # the kitchen's messages ("line 2 put(egg, pot): …")
 
 
@@ -46,7 +47,7 @@ def recheck(entry: LibraryEntry, body: str, primitives: PrimitiveSet, verbs: Seq
     """Run `body` for the entry's example action through `validator` (a reduce.validation.PlanValidator)."""
     action = example_action(entry)
     if action is None:
-        return Recheck("unchecked", (NO_EXAMPLE,))
+        return Recheck(CheckStatus.UNCHECKED, (NO_EXAMPLE,))
     calls = instantiate(body, dict(entry.example))
     plan = expand(calls, primitives, verb_finder(verbs, entry.verb, entry.signature)) if calls is not None else None
     if plan is None:  # body_problems lets through only bodies that expand: a caller that skipped it

@@ -13,11 +13,12 @@ from sqlite_utils import Database
 from cook2ltl.errors import UserError
 from cook2ltl.library.faults import DAMAGED_HINT
 from cook2ltl.paths import shown
+from cook2ltl.reduce.validation import CheckStatus
 
 TABLE = "actions"
 VERSIONS = "versions"
 REVIEWS = "reviews"
-VALIDATIONS = ("passed", "failed", "unchecked")  # the kitchen check of a body; unchecked: never run
+VALIDATIONS = tuple(CheckStatus)  # the kitchen check of a body
 
 
 def _create_actions(db: Database) -> None:

@@ -32,13 +32,13 @@ from sqlite_utils import Database
 from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.library import versions
 from cook2ltl.library.connection import open_library
-from cook2ltl.library.entry import NO_PLAN, LibraryEntry, Status, as_row, effect_column, effect_of, \
-    from_row, shown_body
 from cook2ltl.library.effect import KEEP, Keep, checked_effect, shown_effect
+from cook2ltl.library.entry import NO_PLAN, LibraryEntry, Status, as_row, effect_column, effect_of, from_row, shown_body
 from cook2ltl.library.faults import SQL_ERROR, DamagedRow, reported
 from cook2ltl.library.schema import SCHEMA_VERSION, TABLE
 from cook2ltl.library.versions import Review, Version, checked, now
 from cook2ltl.paths import shown, user_path
+from cook2ltl.reduce.validation import CheckStatus
 
 __all__ = ["NO_PLAN", "SCHEMA_VERSION", "Library", "LibraryEntry", "Review", "Status", "Version", "reviewer",
            "shown_body"]
@@ -158,7 +158,7 @@ class Library:
 
     @_reported
     def add(self, primitives: str, verb: str, signature: tuple[str, ...], body: str, model: str, prompt_hash: str,
-            replacing: int | None = None, validation: str = "unchecked", problems: Sequence[str] = (),
+            replacing: int | None = None, validation: CheckStatus = CheckStatus.UNCHECKED, problems: Sequence[str] = (),
             example: Mapping[str, str] | None = None, effect: Sequence[str] | None = None) -> LibraryEntry:
         """Store a model's reduction as a new pending entry (version 1), with its intended effect (atom templates
         such as "boiled(what)"; a bad one is a UserError and nothing is written). `replacing` is a live entry that
@@ -198,7 +198,7 @@ class Library:
                 raise UserError(f"Entry {entry_id} ({entry.action}) has no plan: there is nothing to approve.",
                                 f"write its body with `cook2ltl library edit {entry_id} --body-file FILE`, "
                                 "then approve it.")
-            if status == Status.APPROVED and row["validation"] == "failed" and not force:
+            if status == Status.APPROVED and row["validation"] == CheckStatus.FAILED and not force:
                 raise UserError(f"Entry {entry_id} ({entry.action}) failed the kitchen check: "
                                 f"{'; '.join(json.loads(row['problems'])) or 'no details'}.",
                                 "fix its body with `cook2ltl library edit`, or approve it anyway with --force.")
@@ -206,8 +206,8 @@ class Library:
         return self.get(entry_id)
 
     @_reported
-    def edit(self, entry_id: int, body: str, by: str, validation: str = "unchecked", problems: Sequence[str] = (),
-             note: str = "", effect: Sequence[str] | None | Keep = KEEP,
+    def edit(self, entry_id: int, body: str, by: str, validation: CheckStatus = CheckStatus.UNCHECKED,
+             problems: Sequence[str] = (), note: str = "", effect: Sequence[str] | None | Keep = KEEP,
              expected: LibraryEntry | None = None) -> LibraryEntry:
         """A new body (or the same one with another effect) as a new version (the caller checks and validates the
         body first); the entry returns to pending, unreviewed, for someone to approve. `effect`: the new intended
@@ -298,7 +298,7 @@ class Library:
             raise self._taken(self.get(entry_id)) from error
         versions.record_review(db, Review(entry_id, self.get(entry_id).version, status.value, by, at))
 
-    def _new_version(self, row: dict, body: str, by: str, validation: str, problems: tuple[str, ...], note: str,
+    def _new_version(self, row: dict, body: str, by: str, validation: CheckStatus, problems: tuple[str, ...], note: str,
                      effect: tuple[str, ...] | None | Keep, restores: int | None = None) -> None:
         db = self._db()
         number = row["version"] + 1

@@ -11,6 +11,7 @@ from sqlite_utils import Database
 
 from cook2ltl.library.faults import reading_rows
 from cook2ltl.library.schema import REVIEWS, VALIDATIONS, VERSIONS
+from cook2ltl.reduce.validation import CheckStatus
 
 
 @dataclass(frozen=True)
@@ -18,7 +19,7 @@ class Version:
     entry_id: int
     version: int
     body: str
-    validation: str  # passed, failed or unchecked: the kitchen check of this body
+    validation: CheckStatus  # the kitchen check of this body
     problems: tuple[str, ...]
     author: str  # the model that learnt it, or the person who edited, undid or imported it
     at: str
@@ -39,10 +40,10 @@ def now() -> str:
     return datetime.now(timezone.utc).isoformat(timespec="seconds")
 
 
-def checked(validation: str) -> str:
+def checked(validation: str) -> CheckStatus:
     if validation not in VALIDATIONS:
         raise ValueError(f"validation must be one of {', '.join(VALIDATIONS)}, not {validation!r}")
-    return validation
+    return CheckStatus(validation)
 
 
 def record(db: Database, version: Version) -> None:
@@ -58,7 +59,7 @@ def history(db: Database, entry_id: int) -> tuple[Version, ...]:
     rows = db[VERSIONS].rows_where("entry_id = ?", [entry_id], order_by="version")
     with reading_rows():
         return tuple(Version(entry_id=row["entry_id"], version=row["version"], body=row["body"],
-                             validation=row["validation"], problems=tuple(json.loads(row["problems"])),
+                             validation=CheckStatus(row["validation"]), problems=tuple(json.loads(row["problems"])),
                              author=row["author"], at=row["at"], note=row["note"], restores=row["restores"])
                      for row in rows)
 

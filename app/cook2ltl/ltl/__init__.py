@@ -31,12 +31,12 @@ from cook2ltl.ltl.ast import (
 from cook2ltl.ltl.limits import FormulaTooLarge
 from cook2ltl.ltl.parser import LTLSyntaxError, parse
 from cook2ltl.ltl.printer import to_spot, to_unicode
-from cook2ltl.ltl.progress import StepResult, Verdict, holds, monitor, progress, verdict
+from cook2ltl.ltl.progress import Monitored, Verdict, holds, monitor, progress, verdict
 from cook2ltl.ltl.simplify import simplify
 
 __all__ = [
     "clear_caches", "FALSE", "TRUE", "Always", "And", "Atom", "Equiv", "Eventually", "Formula", "FormulaTooLarge",
-    "Implies", "LTLSyntaxError", "Next", "Not", "Or", "Release", "StepResult", "StrongRelease", "Until",
+    "Implies", "LTLSyntaxError", "Next", "Not", "Or", "Release", "Monitored", "StrongRelease", "Until",
     "Verdict", "WeakNext", "WeakUntil", "holds", "holds_at_end", "monitor", "parse", "progress",
     "simplify", "to_spot", "to_unicode", "verdict",
 ]  # fmt: skip

@@ -213,14 +213,14 @@ def holds(formula: Formula, trace: Iterable[Iterable[Atom]]) -> bool:
 
 
 @dataclass(frozen=True)
-class StepResult:
+class Monitored:
     index: int  # 1 for the first step
     step: Step
     remaining: Formula
     verdict: Verdict
 
 
-def monitor(formula: Formula, trace: Iterable[Iterable[Atom]]) -> Iterator[StepResult]:
+def monitor(formula: Formula, trace: Iterable[Iterable[Atom]]) -> Iterator[Monitored]:
     """Progress through the trace, yielding the obligation and verdict after each step.
 
     Once the obligation is ``⊤`` or ``⊥`` it never changes; the monitor still
@@ -229,4 +229,4 @@ def monitor(formula: Formula, trace: Iterable[Iterable[Atom]]) -> Iterator[StepR
     for index, step in enumerate(trace, start=1):
         step = frozenset(step)
         formula = progress(formula, step)
-        yield StepResult(index, step, formula, verdict(formula))
+        yield Monitored(index, step, formula, verdict(formula))

@@ -9,13 +9,13 @@ from __future__ import annotations
 from dataclasses import replace
 
 from cook2ltl.domain.recipe import ParsedRecipe, Sentence, Span, Step, Token
+from cook2ltl.domain.settings import Limits
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
 from cook2ltl.parse.anaphora import resolve_objects
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.parse.frames import build_frames
 from cook2ltl.preprocess import split_sentences, visible_text
-from cook2ltl.domain.settings import Limits
-from cook2ltl.domain.settings_file import load_settings
 
 CONNECTIVES = {"then", "and", "or", "next", "afterwards", "finally"}
 

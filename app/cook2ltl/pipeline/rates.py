@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from cook2ltl.pipeline.records import Translation
 from cook2ltl.domain.actions import Source
+from cook2ltl.pipeline.records import Translation
 
 
 @dataclass(frozen=True)

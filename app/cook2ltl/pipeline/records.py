@@ -9,7 +9,7 @@ from enum import StrEnum
 from cook2ltl.domain.actions import Call, Reduction
 from cook2ltl.domain.recipe import ParsedRecipe, Step
 from cook2ltl.ltl.ast import Formula
-from cook2ltl.reduce.validation import Validation
+from cook2ltl.reduce.validation import CheckStatus, Validation
 from cook2ltl.world.check import PlanCheck
 
 
@@ -28,7 +28,7 @@ class ActionResult:
     attempts: tuple[Reduction, ...] = ()  # the model's other reductions of this action (failed, then repaired)
     # For a library hit: the entry's own kitchen check (passed, failed, unchecked) and problems, so a plan
     # that failed when it was learnt is never reused silently.
-    entry_validation: str | None = None
+    entry_validation: CheckStatus | None = None
     entry_problems: tuple[str, ...] = ()
     check: PlanCheck | None = None  # the plan in the world model, where the recipe's earlier steps left it
 
@@ -85,7 +85,7 @@ class Parsed:
 
 
 @dataclass(frozen=True)
-class Started:
+class TranslationStarted:
     steps: int
     actions: int
 
@@ -103,8 +103,8 @@ class StepDone:
 
 
 @dataclass(frozen=True)
-class Finished:
+class TranslationFinished:
     translation: Translation
 
 
-Event = Parsed | Started | ActionDone | StepDone | Finished
+TranslationEvent = Parsed | TranslationStarted | ActionDone | StepDone | TranslationFinished

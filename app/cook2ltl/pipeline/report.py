@@ -9,6 +9,7 @@ from cook2ltl.domain.actions import Source
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.pipeline.rates import rates
 from cook2ltl.pipeline.records import Translation
+from cook2ltl.reduce.validation import CheckStatus
 from cook2ltl.text_safety import literal, styled
 
 SOURCE_STYLE = {Source.PRIMITIVE: "green", Source.LIBRARY: "cyan", Source.LLM: "magenta", Source.WORLD: "dim"}
@@ -67,7 +68,7 @@ def _show_reduction(result, console: Console) -> None:
                              (f"({check.scene or 'no scene'}{repaired})", "dim")), highlight=False)
         for message in check.messages():
             console.print(literal(f"            ! {message}", style), highlight=False)
-    if result.entry_validation == "failed":
+    if result.entry_validation == CheckStatus.FAILED:
         console.print(literal("            kitchen check when learnt: failed", "red"), highlight=False)
         for message in result.entry_problems:
             console.print(literal(f"            ! {message}", "red"), highlight=False)

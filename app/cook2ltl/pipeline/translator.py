@@ -22,26 +22,43 @@ import time
 from dataclasses import dataclass, replace
 from typing import Iterator
 
+from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.domain.recipe import ParsedRecipe
+from cook2ltl.formulas.formula import (
+    ELAPSED,
+    Part,
+    alternatives,
+    check,
+    direct_calls,
+    direct_element,
+    plan_element,
+    step_element,
+)
 from cook2ltl.library.store import Library
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.patterns import Element, sequenced_visit
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.parse.recipe import parse_recipe
+from cook2ltl.pipeline.records import (
+    ActionDone,
+    ActionResult,
+    Parsed,
+    Stats,
+    StepDone,
+    StepResult,
+    Translation,
+    TranslationEvent,
+    TranslationFinished,
+    TranslationStarted,
+    Variant,
+)
 from cook2ltl.reduce.action import actions_of, known_objects
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders
 from cook2ltl.reduce.intents import Intents
 from cook2ltl.reduce.llm import LanguageModel
-from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, offered_verbs
 from cook2ltl.reduce.repair import Checked, reduce_checked
-from cook2ltl.reduce.validation import PlanValidator, RecipeSoFar, Validation
-from cook2ltl.pipeline.records import (
-    ActionDone, ActionResult, Event, Finished, Parsed, Started, Stats, StepDone, StepResult, Translation, Variant,
-)
-from cook2ltl.formulas.formula import (
-    ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
-)
+from cook2ltl.reduce.validation import CheckStatus, PlanValidator, RecipeSoFar, Validation
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
 from cook2ltl.world.effects import cast, template_text
 from cook2ltl.world.planner import all_reached
@@ -63,19 +80,20 @@ class Translator:
 
 
 def run(text: str, spans: SpanExtractor, dependencies: DependencyParser, translator: Translator,
-        cancel: threading.Event | None = None) -> Iterator[Event]:
+        cancel: threading.Event | None = None) -> Iterator[TranslationEvent]:
     """The whole of Algorithm 1 on a recipe's text: preprocessing and parsing, then `translate`."""
     parsed = parse_recipe(text, spans, dependencies)
     yield Parsed(parsed)
     yield from translate(parsed, translator, cancel)
 
 
-def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Event | None = None) -> Iterator[Event]:
+def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Event | None = None
+              ) -> Iterator[TranslationEvent]:
     started = time.perf_counter()
     state = _Run(translator)
     state.start(parsed)
     total = sum(len(actions_of(frame)) for step in parsed.steps for frame in step.frames)
-    yield Started(len(parsed.steps), total)
+    yield TranslationStarted(len(parsed.steps), total)
     steps, elements, done = [], [], 0
     for step in parsed.steps:
         results, parts = [], []
@@ -105,7 +123,7 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
     written = state.intents.written if state.intents else []
     stats = replace(state.stats, seconds=time.perf_counter() - started, effect_calls=len(written),
                     llm_seconds=state.stats.llm_seconds + sum(usage.seconds for usage in written))
-    yield Finished(Translation(translator.primitives.name, translator.variant, translator.model.name,
+    yield TranslationFinished(Translation(translator.primitives.name, translator.variant, translator.model.name,
                                tuple(steps), sequenced_visit(*elements), stats, translator.validator is not None,
                                state.world_start, state.world_binding, state.skipped_verbs))
 
@@ -255,10 +273,11 @@ class _Run:
                stale: int | None) -> Reduction:
         """Cache a new reduction as a pending entry; without a plan, an empty body that records it."""
         if plan:
-            body, status = parametrize(reduction.body, action), validation.status if validation else "unchecked"
+            status = validation.status if validation else CheckStatus.UNCHECKED
+            body = parametrize(reduction.body, action)
             problems = validation.messages() if validation else ()
         else:
-            body, status, problems = "", "failed", (NO_PLAN_PROBLEM,)
+            body, status, problems = "", CheckStatus.FAILED, (NO_PLAN_PROBLEM,)
         effect = None if self.intents is None else [
             template_text(t) for t in self.intents.templates(action, self.world_state)]
         entry = self.t.library.add(self.t.primitives.name, action.verb, action.signature, body, self.t.model.name,

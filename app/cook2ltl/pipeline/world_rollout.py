@@ -17,13 +17,13 @@ import threading
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from cook2ltl.domain.actions import Call, PrimitiveSet
 from cook2ltl.errors import UserError
+from cook2ltl.formulas.formula import ELAPSED, call_atom, condition_atom
 from cook2ltl.ltl.ast import FALSE, Atom, Formula
 from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.ltl.progress import Verdict, progress, verdict
 from cook2ltl.pipeline.records import ActionResult, StepResult, Translation
-from cook2ltl.domain.actions import Call, PrimitiveSet
-from cook2ltl.formulas.formula import ELAPSED, call_atom, condition_atom
 from cook2ltl.world.effects import fact_text
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.planner import reached
@@ -115,15 +115,15 @@ class StepRolled:
 
 
 @dataclass(frozen=True)
-class Finished:
+class RecipeRolledOut:
     rollout: RecipeRollout
 
 
-Event = Began | ActionRolled | StepRolled | Finished
+RecipeRolloutEvent = Began | ActionRolled | StepRolled | RecipeRolledOut
 
 
 def roll_out_recipe(translation: Translation, primitives: PrimitiveSet, world: World | None = None,
-                    cancel: threading.Event | None = None) -> Iterator[Event]:
+                    cancel: threading.Event | None = None) -> Iterator[RecipeRolloutEvent]:
     """Replay `translation` (made with `primitives` and the world model) from the state before its first step.
     Raises UserError for a translation made without the world model."""
     if world is None:
@@ -148,7 +148,7 @@ def roll_out_recipe(translation: Translation, primitives: PrimitiveSet, world: W
             yield ActionRolled(step, action, done)
         steps.append(run.step(step, tuple(runs), step_remaining))
         yield StepRolled(steps[-1])
-    yield Finished(RecipeRollout(translation, tuple(steps), run.remaining, verdict(run.remaining), run.met,
+    yield RecipeRolledOut(RecipeRollout(translation, tuple(steps), run.remaining, verdict(run.remaining), run.met,
                                  run.unobservable, run.state))
 
 

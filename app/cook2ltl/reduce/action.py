@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 from collections.abc import Collection
 
-from cook2ltl.domain.recipe import ARGUMENT_LABELS, Connective, Frame, Label, field_of
 from cook2ltl.domain.actions import Action, Parameter
+from cook2ltl.domain.recipe import ARGUMENT_LABELS, Connective, Frame, Label, field_of
 
 CATEGORY = {Label.WHAT: "what", Label.WHERE: "where", Label.HOW: "how", Label.TIME: "time", Label.TEMP: "temperature"}
 # Leading words that do not name the thing: "the penne", "2 eggs", "rest of the mix".

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 
-from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.domain.actions import Action, Usage
+from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.prompt import header
 from cook2ltl.world.effects import SLOTS, Template, parse_template, template_text
 from cook2ltl.world.logic import State

@@ -11,10 +11,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from cook2ltl.domain.actions import Action, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.grammar import vocabulary
 from cook2ltl.reduce.llm import LanguageModel
-from cook2ltl.domain.actions import Action, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.prompt import build_prompt
 from cook2ltl.reduce.reduction import TOKENS_PER_LINE, ReductionSettings
 from cook2ltl.world.affordances import admissible_calls

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.domain.actions import Action, Usage
+from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.world.effects import Template, intended_effect, parse_template, table_effect, verb_table
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.world import World

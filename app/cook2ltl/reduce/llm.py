@@ -19,10 +19,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Protocol
 
-from cook2ltl.errors import UserError
-from cook2ltl.reduce.grammar import gbnf_literal
 from cook2ltl.domain.actions import Usage
 from cook2ltl.domain.settings import Limits
+from cook2ltl.errors import UserError
+from cook2ltl.reduce.grammar import gbnf_literal
 
 CONTEXT_TOKENS = 4096
 DEFAULT_TIME_LIMIT = Limits.llm_seconds  # seconds; load_model takes the settings' [limits] llm_seconds

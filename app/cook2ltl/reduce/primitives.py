@@ -21,8 +21,8 @@ from typing import Annotated
 from pydantic import Field, StringConstraints, field_validator
 
 from cook2ltl import files, paths
-from cook2ltl.errors import UserError
 from cook2ltl.domain.actions import CONDITION, Primitive, PrimitiveSet, WorldSpec
+from cook2ltl.errors import UserError
 from cook2ltl.toml_models import FileName, Identifier, PddlName, Table, flag, validated
 
 BUILT_IN = ("recipe", "ai2thor")
@@ -74,6 +74,9 @@ class PrimitiveSetFile(Table):
         description=f'a table of 1 to {MAX_PRIMITIVES} primitives, each with at most {MAX_PARAMETERS} parameters, '
                     'e.g. put = ["what", "where"]')
     world: WorldTable | None = Field(None, description="a table")
+    thor: dict[Identifier, Identifier] = Field(
+        {}, max_length=MAX_PRIMITIVES,
+        description='a table of primitives and what each does in a THOR kitchen, e.g. cut = "slice"')
 
 
 def load_primitives(choice: str) -> PrimitiveSet:
@@ -105,10 +108,13 @@ def _primitive_set(file: PrimitiveSetFile, path: Path) -> PrimitiveSet:
         raise bad(f"{', '.join(sorted(clash))} is both a primitive and a state; a state atom would read as the action.")
     if not objects:
         raise bad("`objects` is empty: list what the robot may handle besides a recipe's own objects.")
+    strangers = sorted(set(file.thor) - set(file.primitives))
+    if strangers:
+        raise bad(f"[thor] names {', '.join(strangers)}, which the set's [primitives] do not have.")
     examples = files.read_text(_beside(path, file.examples, "examples"), EXAMPLES_BYTES, "examples file", HINT)
     world = None if file.world is None else _world(file.world, path)
     return PrimitiveSet(file.name or path.stem, tuple(primitives), objects, states, examples.expandtabs(4), path,
-                        world)
+                        world, tuple(file.thor.items()))
 
 
 def _world(table: WorldTable, path: Path) -> WorldSpec:

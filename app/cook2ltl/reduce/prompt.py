@@ -16,10 +16,10 @@ import hashlib
 from dataclasses import dataclass
 from typing import Iterable
 
+from cook2ltl.domain.actions import CONDITION, Action, Call, PrimitiveSet
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.grammar import INDENT, unusable_verb
-from cook2ltl.domain.actions import CONDITION, Action, Call, PrimitiveSet
 
 
 @dataclass(frozen=True)

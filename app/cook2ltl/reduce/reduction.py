@@ -5,10 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterable, Sequence
 
+from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.body import bind, instantiate, is_empty, loops, read_body, without_loops
 from cook2ltl.reduce.grammar import admits, to_gbnf, unusable_verb, vocabulary
 from cook2ltl.reduce.llm import LanguageModel
-from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.prompt import Feedback, build_prompt
 
 TOKENS_PER_LINE = 40  # a call with its comment; the grammar ends the body long before this budget

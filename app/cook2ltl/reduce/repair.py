@@ -15,8 +15,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
-from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction
+from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.prompt import Feedback
 from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, reduce_action
 from cook2ltl.reduce.validation import PlanValidator, Validation

@@ -7,10 +7,18 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import Protocol
 
 from cook2ltl.domain.actions import Action, Call
 
+
+class CheckStatus(StrEnum):
+    """A plan's kitchen check, as the library keeps it beside the body it checked."""
+
+    PASSED = "passed"
+    FAILED = "failed"
+    UNCHECKED = "unchecked"  # never run: nothing in the kitchen could stand for an object, or no check was asked
 @dataclass(frozen=True)
 class LineProblem:
     line: int  # 1-based in the plan; 0 for the whole plan
@@ -33,9 +41,11 @@ class Validation:
         return tuple(problem.text() for problem in self.problems)
 
     @property
-    def status(self) -> str:
-        """The library's `validation` column: passed, failed or unchecked."""
-        return "unchecked" if not self.checked else "passed" if self.passed else "failed"
+    def status(self) -> CheckStatus:
+        """The library's `validation` column."""
+        if not self.checked:
+            return CheckStatus.UNCHECKED
+        return CheckStatus.PASSED if self.passed else CheckStatus.FAILED
 
 
 @dataclass(frozen=True)

@@ -15,8 +15,8 @@ from dataclasses import replace
 from functools import cache
 from pathlib import Path
 
-from cook2ltl.thor_types import load_type_rules
 from cook2ltl.simulator.state import ABILITIES, Agent, KitchenState, Thing
+from cook2ltl.thor_types import load_type_rules
 
 _SCENE_NAME = re.compile(r"^(FloorPlan\d+)(?:_physics)?$")
 

@@ -7,19 +7,19 @@ Nothing heavy is imported or loaded at start-up (the first screen paints before 
 from __future__ import annotations
 
 import traceback
+from collections.abc import Mapping
 from dataclasses import replace
 from datetime import datetime
 from pathlib import Path
-from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from textual.app import App
 from textual.binding import Binding
 from textual.screen import Screen
 
-from cook2ltl.errors import UserError
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.errors import UserError
 from cook2ltl.text_safety import visible
 from cook2ltl.ui.commands import MainCommands
 from cook2ltl.ui.messages import TranslationDone

@@ -14,8 +14,8 @@ if TYPE_CHECKING:
 
 def write_translation(translation: Translation, path: Path) -> None:
     from cook2ltl.pipeline.report import show
-    from cook2ltl.text_safety import json_text, terminal
     from cook2ltl.pipeline.serialize import translation_json
+    from cook2ltl.text_safety import json_text, terminal
 
     try:
         with path.open("w", encoding="utf-8") as handle:

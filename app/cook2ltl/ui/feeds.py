@@ -1,5 +1,5 @@
-"""The core's generators (`pipeline.run`, `kitchen.trial.run_trial`, `translate.world_rollout.roll_out_recipe`)
-as streams of typed messages.
+"""The core's generators (`pipeline.translator.run`, `assembly.trial.run_trial`,
+`pipeline.world_rollout.roll_out_recipe`) as streams of typed messages.
 
 A worker only forwards what these yield, so the translating and rolling out are testable without a screen;
 cancellation reaches the core as the same `threading.Event` the core takes.
@@ -16,9 +16,22 @@ from textual.message import Message
 
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.ui.messages import (
-    ActionReduced, ObjectState, RecipeActionRolled, RecipeParsed, RecipeRolloutBegan, RecipeRolloutDone,
-    RecipeStepRolled, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped, StepTranslated, TranslationDone,
-    WorkNotice, WorkProgress, WorkStopped,
+    ActionReduced,
+    ObjectState,
+    RecipeActionRolled,
+    RecipeParsed,
+    RecipeRolloutBegan,
+    RecipeRolloutDone,
+    RecipeStepRolled,
+    RolloutBegan,
+    RolloutDone,
+    RolloutRefused,
+    RolloutStepped,
+    StepTranslated,
+    TranslationDone,
+    WorkNotice,
+    WorkProgress,
+    WorkStopped,
 )
 from cook2ltl.ui.services import Services
 
@@ -32,7 +45,7 @@ if TYPE_CHECKING:
 class TranslateRequest:
     text: str
     primitives: str  # recipe, ai2thor, or a TOML file
-    variant: str  # a pipeline.Variant value
+    variant: str  # a pipeline.records.Variant value
     model: str
     validate: bool = True  # run new reductions in the kitchen before caching them (repairing failures)
     approved_only: bool = False  # lab mode: reuse approved library entries only
@@ -75,7 +88,14 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
 
 def _translating(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
     from cook2ltl.assembly.translators import TranslateOptions, build_translator
-    from cook2ltl.pipeline.records import ActionDone, Finished, Parsed, Started, StepDone, Variant
+    from cook2ltl.pipeline.records import (
+        ActionDone,
+        Parsed,
+        StepDone,
+        TranslationFinished,
+        TranslationStarted,
+        Variant,
+    )
     from cook2ltl.pipeline.translator import run
     from cook2ltl.reduce.primitives import load_primitives
 
@@ -97,7 +117,7 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
     for event in run(request.text, spans, dependencies, translator, cancel):
         if isinstance(event, Parsed):
             yield RecipeParsed(event.recipe)
-        elif isinstance(event, Started):
+        elif isinstance(event, TranslationStarted):
             total = event.actions
             yield WorkProgress(f"reducing {total} actions with {request.model} …", 0, total)
         elif isinstance(event, ActionDone):
@@ -106,15 +126,15 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
             yield WorkProgress(f"{reduction.action.text()} ({reduction.source.value})", event.done, total)
         elif isinstance(event, StepDone):
             yield StepTranslated(event.result)
-        elif isinstance(event, Finished):
+        elif isinstance(event, TranslationFinished):
             yield TranslationDone(event.translation, request.primitives)
             return
     yield WorkStopped()
 
 
 def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.Event) -> Iterator[Message]:
-    from cook2ltl.execution.rollout import ActionRefused, Started, Stepped
     from cook2ltl.assembly.trial import TrialDone, run_trial
+    from cook2ltl.execution.rollout import ActionRefused, RolloutStarted, Stepped
     from cook2ltl.reduce.llm import GenerationCancelled
 
     task, plan, formula = request.task, None, request.formula
@@ -134,7 +154,7 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
         kitchen = services.kitchen(request.scene)
         touched: dict[str, None] = {}
         for event in run_trial(kitchen, formula, request.scene, task, plan, cancel=cancel):
-            if isinstance(event, Started):
+            if isinstance(event, RolloutStarted):
                 yield RolloutBegan(event.formula, event.scene, task, plan, event.unobservable)
                 yield WorkProgress("rolling out …")
             elif isinstance(event, Stepped):
@@ -148,8 +168,8 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
 
 def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cancel: threading.Event
                         ) -> Iterator[Message]:
+    from cook2ltl.pipeline.world_rollout import ActionRolled, Began, RecipeRolledOut, StepRolled, roll_out_recipe
     from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.pipeline.world_rollout import ActionRolled, Began, Finished, StepRolled, roll_out_recipe
 
     translation = request.translation
     if translation is None:
@@ -171,14 +191,14 @@ def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cance
             yield WorkProgress(f"rolling out {event.run.result.reduction.action.text()}", event.done, total)
         elif isinstance(event, StepRolled):
             yield RecipeStepRolled(event.run)
-        elif isinstance(event, Finished):
+        elif isinstance(event, RecipeRolledOut):
             yield RecipeRolloutDone(event.rollout)
             return
     yield WorkStopped()
 
 
 def _planner(services: Services, request: RolloutRequest, cancel: threading.Event):
-    from cook2ltl.assembly.planning import PRIMITIVES, Planner, ignore_notice
+    from cook2ltl.assembly.planning import PRIMITIVES, TaskPlanner, ignore_notice
     from cook2ltl.assembly.translators import TranslateOptions, build_translator
     from cook2ltl.reduce.primitives import load_primitives
 
@@ -187,7 +207,7 @@ def _planner(services: Services, request: RolloutRequest, cancel: threading.Even
     options = TranslateOptions(repairs=request.repairs, ground=False)
     translator = build_translator(load_primitives(PRIMITIVES), services.model(request.model, cancel),
                                   services.library(), options, services.validator, ignore_notice)
-    return Planner(translator, services.spans(), services.dependencies())
+    return TaskPlanner(translator, services.spans(), services.dependencies())
 
 
 def _object_ids(calls) -> list[str]:

@@ -12,20 +12,20 @@ from typing import TYPE_CHECKING
 from textual.message import Message
 
 if TYPE_CHECKING:
+    from cook2ltl.assembly.planning import Plan
+    from cook2ltl.assembly.trial import Trial
+    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.domain.recipe import ParsedRecipe
     from cook2ltl.execution.executor import Attempt
-    from cook2ltl.assembly.planning import Plan
     from cook2ltl.execution.rollout import TraceStep
     from cook2ltl.execution.tasks import Task
-    from cook2ltl.assembly.trial import Trial
     from cook2ltl.library import LibraryEntry, Version
-    from cook2ltl.library.versions import Review
     from cook2ltl.library.recheck import Recheck
+    from cook2ltl.library.versions import Review
     from cook2ltl.ltl.ast import Atom, Formula
     from cook2ltl.pipeline.records import ActionDone, StepResult, Translation
-    from cook2ltl.domain.actions import PrimitiveSet
-    from cook2ltl.reduce.reduction import LibraryVerb
     from cook2ltl.pipeline.world_rollout import ActionRolled, Began, RecipeRollout, StepRun
+    from cook2ltl.reduce.reduction import LibraryVerb
 
 
 class ScreenMessage(Message):

@@ -12,11 +12,11 @@ from typing import TYPE_CHECKING, Any
 from cook2ltl.assembly.backends import DEFAULT_MODEL
 
 if TYPE_CHECKING:
+    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.execution.executor import Kitchen
     from cook2ltl.library import Library
     from cook2ltl.parse.backends import DependencyParser, SpanExtractor
     from cook2ltl.reduce.llm import LanguageModel
-    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.reduce.validation import PlanValidator
 
 
@@ -109,8 +109,8 @@ def production_services() -> Services:
     from cook2ltl import paths
 
     def spans():
-        from cook2ltl.domain.settings_file import load_settings
         from cook2ltl.assembly.backends import span_extractor
+        from cook2ltl.domain.settings_file import load_settings
 
         return span_extractor(load_settings())
 

@@ -12,15 +12,15 @@ are never effects: the world cannot observe them.
 from __future__ import annotations
 
 import re
-from functools import cache
 from collections.abc import Sequence
+from functools import cache
 from itertools import product
 from pathlib import Path
 
 from cook2ltl import files, paths
+from cook2ltl.domain.actions import Action
 from cook2ltl.errors import UserError
 from cook2ltl.paths import shown
-from cook2ltl.domain.actions import Action
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.world import World
 

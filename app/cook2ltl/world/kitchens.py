@@ -6,8 +6,8 @@ from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
 from cook2ltl.domain.actions import PrimitiveSet
 from cook2ltl.world.check import Grounding, Start
-from cook2ltl.world.planner import FastDownward, Planner
 from cook2ltl.world.pddl import load_domain
+from cook2ltl.world.planner import FastDownward, Planner
 from cook2ltl.world.world import World
 
 

@@ -14,9 +14,9 @@ from functools import cache
 from pathlib import Path
 from typing import Protocol
 
-from cook2ltl.domain.actions import Call
+from cook2ltl.domain.actions import WAIT, Call
 from cook2ltl.world.logic import Fact, State, effects_of
-from cook2ltl.world.world import PROCESS, WAIT, World
+from cook2ltl.world.world import PROCESS, World
 
 ENGINE = "fast-downward"
 # The translator's invariant synthesis only speeds the search up; on the THOR domain's conditional effects it

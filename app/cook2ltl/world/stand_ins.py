@@ -56,7 +56,7 @@ INTO = ("put", "pour")  # primitives whose second argument is where the first go
 
 
 @dataclass(frozen=True)
-class Frame:
+class Casting:
     """Where a plan runs: the scene, the objectIds bound to names beforehand, or why it cannot run."""
 
     scene: str
@@ -74,16 +74,16 @@ def plan_names(plan: Iterable[Call]) -> tuple[str, ...]:
     return tuple(names)
 
 
-def build_frame(plan: tuple[Call, ...], liquids: frozenset[str]) -> Frame:
+def build_frame(plan: tuple[Call, ...], liquids: frozenset[str]) -> Casting:
     """The best kitchen for the plan and the stand-ins bound in it."""
     names = [n for n in plan_names(plan) if n not in liquids]
     missing = tuple(n for n in names if n in NO_COUNTERPART)
     if missing:
-        return Frame("", {}, missing)
+        return Casting("", {}, missing)
     return best_frame(names, {call.args[1] for call in plan if call.name in INTO and len(call.args) == 2})
 
 
-def best_frame(names: Iterable[str], into: Collection[str], asks: Mapping[str, Collection[str]] = {}) -> Frame:
+def best_frame(names: Iterable[str], into: Collection[str], asks: Mapping[str, Collection[str]] = {}) -> Casting:
     """The kitchen where most of `names` find an object or a stand-in (`into`: the names things go into;
     `asks`: the states a name must be able to take, `cooked`, `sliced`), and the stand-ins bound in it; a name
     of `NO_COUNTERPART` stays missing."""
@@ -95,7 +95,7 @@ def best_frame(names: Iterable[str], into: Collection[str], asks: Mapping[str, C
 
 
 def frame_in(scene: str, names: list[str], into: Collection[str], asks: Mapping[str, Collection[str]] = {}
-             ) -> Frame:
+             ) -> Casting:
     from cook2ltl.world.thor_names import types_for
 
     objects = _objects(scene)
@@ -128,7 +128,7 @@ def frame_in(scene: str, names: list[str], into: Collection[str], asks: Mapping[
         else:
             bound[name] = chosen
     hidden = sum(1 for object_id in bound.values() if object_id in _shut_away(scene))
-    return Frame(scene, bound, tuple(missing), hidden)
+    return Casting(scene, bound, tuple(missing), hidden)
 
 
 def _first_free(objects: tuple[tuple[str, str], ...], wanted: tuple[str, ...], left: Counter[str],
@@ -155,8 +155,8 @@ def _objects(scene: str) -> tuple[tuple[str, str], ...]:
 def _able(scene: str) -> dict[str, set[str]]:
     """Which of the states a recipe asks (sliced, cooked) each object type of the kitchen can take: cooked
     also when its slices can be (bread)."""
-    from cook2ltl.thor_types import load_type_rules
     from cook2ltl.simulator.scenes import load_scene
+    from cook2ltl.thor_types import load_type_rules
 
     slicing = load_type_rules().slicing
     able: dict[str, set[str]] = {}

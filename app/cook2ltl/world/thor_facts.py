@@ -15,7 +15,6 @@ from cook2ltl.ltl.ast import Atom
 from cook2ltl.world.thor_names import Binding, Obj, objects_named, piece_types
 
 ELAPSED = "elapsed"
-WAIT = "wait"
 
 
 def _sliced(o: Obj) -> bool:

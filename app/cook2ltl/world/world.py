@@ -13,17 +13,26 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from cook2ltl.domain.actions import TIMER, Call
-from cook2ltl.world.logic import Fact, State, applicable, bindings, effects_of, ground, holds, match_atom
-from cook2ltl.world.logic import positive_facts, successor
+from cook2ltl.world.logic import (
+    Fact,
+    State,
+    applicable,
+    bindings,
+    effects_of,
+    ground,
+    holds,
+    match_atom,
+    positive_facts,
+    successor,
+)
 from cook2ltl.world.pddl import Domain
 
-WAIT = "wait"
 PROCESS = "process-"
 KEPT = ("enclosed", "carried")  # facts the domains keep up to date from the others (see kept_facts)
 
 
 @dataclass(frozen=True)
-class Step:
+class Applied:
     """One line applied: the state after it, or why it cannot be applied (the state is then unchanged)."""
 
     state: State
@@ -51,18 +60,18 @@ class World:
         predicate = None if subject == TIMER else self.predicate(word)
         return (predicate, subject) if predicate else None
 
-    def apply(self, state: State, call: Call) -> Step:
+    def apply(self, state: State, call: Call) -> Applied:
         if call.is_wait:
             return self._wait(state, call)
         schema = self.domain.schemas.get(call.name)
         if schema is None:
-            return Step(state, f"{call.name} is not an action of the world model {self.domain.name!r}")
+            return Applied(state, f"{call.name} is not an action of the world model {self.domain.name!r}")
         missing = [arg for arg in call.args if arg not in state.objects]
         if missing:
-            return Step(state, f"there is no {', '.join(missing)} in the kitchen")
+            return Applied(state, f"there is no {', '.join(missing)} in the kitchen")
         if not applicable(schema, call.args, state):
-            return Step(state, self.refusal(schema.name, call, state))
-        return Step(successor(schema, call.args, state))
+            return Applied(state, self.refusal(schema.name, call, state))
+        return Applied(successor(schema, call.args, state))
 
     def passed(self, state: State) -> State:
         """The state after time passes: every applicable process acts, all read in the same state."""
@@ -78,12 +87,12 @@ class World:
                     deleted |= fewer
         return state.changed(deleted - added, added)
 
-    def _wait(self, state: State, call: Call) -> Step:
+    def _wait(self, state: State, call: Call) -> Applied:
         after = self.passed(state)
         goal = self.condition(call) if len(call.args) == 2 else None
         if goal is not None and goal not in after.facts:
-            return Step(state, f"{call.args[0]} never becomes {call.args[1]} here: nothing makes it {goal[0]}")
-        return Step(after)
+            return Applied(state, f"{call.args[0]} never becomes {call.args[1]} here: nothing makes it {goal[0]}")
+        return Applied(after)
 
     def possible(self, state: State, fact: Fact) -> bool:
         """Whether an action or process of the domain could ever make `fact` true, as far as the kinds of

@@ -15,9 +15,9 @@ from pathlib import Path
 from typing import Generator, Mapping
 
 from cook2ltl.domain.recipe import Label
+from cook2ltl.parse.gliner_spans import LABELS_FILE
 from cook2ltl.parse.training.brat import read_corpus
 from cook2ltl.parse.training.examples import is_validation, sentence_examples, to_gliner
-from cook2ltl.parse.gliner_spans import LABELS_FILE
 
 # The checkpoint's names for the six categories: GLiNER reads them as prompts.
 DEFAULT_LABEL_NAMES: dict[Label, str] = {

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from cook2ltl.parse.backends import SpanExtractor
 from cook2ltl.parse.training.brat import read_corpus
 from cook2ltl.parse.training.evaluate import Report, strict_f1
 from cook2ltl.parse.training.examples import is_validation, sentence_examples
-from cook2ltl.parse.backends import SpanExtractor
 
 
 def validate(extractor: SpanExtractor, data_dir: Path) -> Report:

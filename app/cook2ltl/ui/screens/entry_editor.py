@@ -17,14 +17,15 @@ from textual.widgets import Button, Label, Static, TextArea
 from textual.worker import Worker, WorkerState
 
 from cook2ltl.errors import UserError
+from cook2ltl.reduce.validation import CheckStatus
 from cook2ltl.text_safety import visible
 from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import EditorReady, KitchenChecked
 
 if TYPE_CHECKING:
+    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.library import LibraryEntry
     from cook2ltl.library.recheck import Recheck
-    from cook2ltl.domain.actions import PrimitiveSet
     from cook2ltl.reduce.reduction import LibraryVerb
 
 
@@ -124,12 +125,13 @@ class EntryEditor(ModalScreen[Edited | None]):
 
     @work(thread=True, exclusive=True, exit_on_error=False, group="editor")
     def kitchen_check(self, body: str) -> None:
-        from cook2ltl.library.recheck import Recheck, recheck
         from cook2ltl.execution.kitchen_check import unsupported
+        from cook2ltl.library.recheck import Recheck, recheck
 
         missing = unsupported(self.primitives)
         if missing:
-            check = Recheck("unchecked", (f"not checked in the kitchen: it has no action for {', '.join(missing)}",))
+            problem = f"not checked in the kitchen: it has no action for {', '.join(missing)}"
+            check = Recheck(CheckStatus.UNCHECKED, (problem,))
         else:
             validator = self.app.services.validator(self.primitives)
             check = recheck(self.entry, body, self.primitives, self.verbs, validator)
@@ -137,7 +139,7 @@ class EntryEditor(ModalScreen[Edited | None]):
 
     def on_kitchen_checked(self, message: KitchenChecked) -> None:
         check = message.check
-        if check.validation != "failed":
+        if check.validation != CheckStatus.FAILED:
             self.dismiss(Edited(message.body, check))
             return
         self.failed = Edited(message.body, check)

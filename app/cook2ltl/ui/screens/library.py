@@ -17,6 +17,7 @@ from textual.containers import Horizontal, VerticalScroll
 from textual.widgets import DataTable, Footer, Header, Input, Label, Select
 
 from cook2ltl.errors import UserError
+from cook2ltl.reduce.validation import CheckStatus
 from cook2ltl.text_safety import literal
 from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import EntryHistory, LibraryLoaded, WorkProgress
@@ -173,7 +174,7 @@ class LibraryScreen(WorkScreen):
         if not entry.has_plan:
             self.notify(f"#{entry.id} has no plan: nothing to approve. Edit it to write its body.", severity="warning")
             return
-        if entry.validation != "failed":
+        if entry.validation != CheckStatus.FAILED:
             self._write(f"approving #{entry.id}", entry.id, "approve")
             return
 

@@ -18,12 +18,22 @@ from textual.widgets import Button, Checkbox, DataTable, Footer, Header, Input, 
 from cook2ltl.errors import UserError
 from cook2ltl.text_safety import literal, visible
 from cook2ltl.ui.feeds import (
-    RecipeRolloutRequest, RolloutRequest, TranslateRequest, recipe_rollout_feed, rollout_feed,
+    RecipeRolloutRequest,
+    RolloutRequest,
+    TranslateRequest,
+    recipe_rollout_feed,
+    rollout_feed,
 )
 from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import (
-    RecipeActionRolled, RecipeRolloutBegan, RecipeRolloutDone, RecipeStepRolled, RolloutBegan, RolloutDone,
-    RolloutRefused, RolloutStepped,
+    RecipeActionRolled,
+    RecipeRolloutBegan,
+    RecipeRolloutDone,
+    RecipeStepRolled,
+    RolloutBegan,
+    RolloutDone,
+    RolloutRefused,
+    RolloutStepped,
 )
 from cook2ltl.ui.screens.base import WorkScreen
 from cook2ltl.ui.screens.dialogs import PathDialog
@@ -152,8 +162,8 @@ class RolloutScreen(WorkScreen):
 
     def request(self) -> RolloutRequest | RecipeRolloutRequest:
         """The chosen target as a request; UserError for what cannot run."""
-        from cook2ltl.execution.tasks import find_task
         from cook2ltl.assembly.trial import reference_formula
+        from cook2ltl.execution.tasks import find_task
 
         target = self.query_one("#target", Select).value
         scene = self.query_one("#scene", Select).value

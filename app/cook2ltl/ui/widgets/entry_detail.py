@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from textual.content import Content
 from textual.widgets import Static
 
+from cook2ltl.reduce.validation import CheckStatus
 from cook2ltl.ui.literal import shown
 
 if TYPE_CHECKING:
@@ -15,7 +16,8 @@ if TYPE_CHECKING:
     from cook2ltl.library.versions import Review
 
 STATUS_STYLE = {"pending": "$text-warning", "approved": "$text-success", "rejected": "$text-error"}
-CHECK_STYLE = {"passed": "$text-success", "failed": "$text-error", "unchecked": "$text-muted"}
+CHECK_STYLE = {CheckStatus.PASSED: "$text-success", CheckStatus.FAILED: "$text-error",
+               CheckStatus.UNCHECKED: "$text-muted"}
 EMPTY = "No entry: the library grows as translations reduce actions with the model."
 
 

@@ -13,8 +13,8 @@ from textual.widgets import Static
 from cook2ltl.ui.literal import formula_text, shown, shown_formula, shown_styled
 
 if TYPE_CHECKING:
-    from cook2ltl.execution.rollout import TraceStep
     from cook2ltl.assembly.trial import Trial
+    from cook2ltl.execution.rollout import TraceStep
     from cook2ltl.ltl.ast import Atom, Formula
     from cook2ltl.pipeline.world_rollout import LineRun, RecipeRollout
     from cook2ltl.ui.messages import RecipeRolloutBegan, RolloutBegan
