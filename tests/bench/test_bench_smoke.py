@@ -11,7 +11,7 @@ from pathlib import Path
 
 from tests.models_required import require_models
 
-BENCHMARKS = ("table1", "table2", "ner", "micro", "fuzz")
+BENCHMARKS = ("table1", "table2", "ner", "micro", "reduce", "fuzz")
 
 
 def test_bench_smoke_writes_every_result(tmp_path):
@@ -51,6 +51,11 @@ def test_bench_smoke_writes_every_result(tmp_path):
     assert 0 < micro["ltl"]["progress_ms_per_step_cold"]["median"] < 50
     assert micro["kitchen"]["actions"] > 0 and micro["kitchen"]["seconds_per_action"] > 0
     assert "first_screen_seconds" in micro["app"] or "error" in micro["app"]
+
+    reduce = results["reduce"]  # two ai2thor actions reduced by smollm2: one cold, one warm
+    [row] = reduce["rows"]
+    assert row["model"] == "smollm2-135m" and row["comments"] is False and reduce["tasks"] == len(row["plans"]) == 2
+    assert row["cold_seconds_mean"] > 0 and row["warm_seconds_median"] > 0 and 0 <= row["key_calls_found_share"] <= 1
 
     fuzz = results["fuzz"]  # every boundary's target, 20 examples each: no traceback, hang or loss
     assert fuzz["failed"] == [] and fuzz["passed"] > 0 and fuzz["tried"] and min(fuzz["tried"].values()) > 0
