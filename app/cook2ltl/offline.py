@@ -86,7 +86,7 @@ def _check_address(sock: socket.socket, address) -> None:
 
 
 def _refuse(host: object) -> None:
-    from cook2ltl.text_safety import visible
+    from cook2ltl.text_safety import visible  # rare: rich (text_safety) loads only when a connection is refused
 
     name = visible(host.decode(errors="replace") if isinstance(host, bytes) else str(host))  # a host name is text
     blocked_hosts.append(name)

@@ -15,8 +15,14 @@ from pathlib import Path
 from typing import Callable, Iterator
 
 from cook2ltl import offline
+from cook2ltl.assembly.backends import SPAN_MODEL
 from cook2ltl.assembly.manifest import ModelSource, ModelState, load_manifest, model_path, state_of
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
+from cook2ltl.execution.launcher import THOR_EXECUTABLE_ENV, find_thor_build
+from cook2ltl.execution.unavailable import KitchenUnavailable
+from cook2ltl.parse.gliner_spans import GlinerSpans, checkpoint_label_names
+from cook2ltl.parse.spacy_dependencies import SpacyDependencies
 
 FIX_MODELS = "make models"
 FIX_INSTALL = "make install"
@@ -54,8 +60,6 @@ def network_checks() -> Iterator[Check]:
     """Everything that could make a library reach for the network, each named with what to change."""
     yield _offline_variables()
     yield from _url_variables()
-    from cook2ltl.domain.settings_file import load_settings
-
     try:
         settings = load_settings()
     except UserError as error:
@@ -87,8 +91,6 @@ def _span_model_offline(settings) -> Check:
     if configured is not None and not configured.is_dir():
         return Check(name, False, f"[ner] checkpoint {configured} is not a local folder: GLiNER would look it up "
                      "on the Hugging Face hub", f"{FIX_LOCAL} in {settings.source}")
-    from cook2ltl.assembly.backends import SPAN_MODEL
-
     checkpoint = configured or model_path(load_manifest()[SPAN_MODEL])
     try:
         config = json.loads((checkpoint / "gliner_config.json").read_text())
@@ -114,9 +116,6 @@ def _in_hub_cache(repo: str) -> bool:
 
 def _kitchen_offline() -> Check:
     """ai2thor's Controller downloads a Unity build when it has no local one; cook2ltl always gives it one."""
-    from cook2ltl.execution.launcher import THOR_EXECUTABLE_ENV, find_thor_build
-    from cook2ltl.execution.unavailable import KitchenUnavailable
-
     try:
         build = find_thor_build()
     except KitchenUnavailable as error:
@@ -151,15 +150,11 @@ def _timed(run: Callable[[], str]) -> str:
 
 def _smoke_package(entry) -> str:
     if entry.name == "spacy-sm":
-        from cook2ltl.parse.spacy_dependencies import SpacyDependencies
-
         return _timed(lambda: f"{len(SpacyDependencies(entry.module).parse([SMOKE_SENTENCE])[0])} tokens parsed")
     return _timed(lambda: f"{len(list(model_path(entry).rglob('*')))} files load from the package")
 
 
 def _smoke_span_model(entry) -> str:
-    from cook2ltl.parse.gliner_spans import GlinerSpans, checkpoint_label_names
-
     where = model_path(entry)
     extractor = GlinerSpans(where, checkpoint_label_names(where))
     spans = _timed(lambda: ", ".join(f"{s.label.value}:{s.text}" for s in extractor.extract([SMOKE_SENTENCE])[0]))
@@ -169,7 +164,7 @@ def _smoke_span_model(entry) -> str:
 
 
 def _smoke_gguf(entry) -> str:
-    from llama_cpp import Llama
+    from llama_cpp import Llama  # heavy, optional: llama.cpp loads only for this smoke run
 
     def generate() -> str:
         model = Llama(str(model_path(entry)), n_ctx=256, n_threads=2, verbose=False, seed=0)

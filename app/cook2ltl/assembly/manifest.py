@@ -92,6 +92,7 @@ def model_path(entry: ModelEntry) -> Path | None:
 
 def trained_path(entry: ModelEntry) -> Path:
     """Keyed by a fingerprint of data and recipe, so changing either retrains and nothing is reused stale."""
+    # startup: the training code (~6 ms) loads when a trained model is located, not with the app or --help
     from cook2ltl.parse.training.train import TrainConfig, fingerprint
 
     data = paths.models_dir() / entry.data

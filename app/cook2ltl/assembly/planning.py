@@ -14,11 +14,16 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from cook2ltl.assembly import backends
+from cook2ltl.assembly.translators import TranslateOptions, open_translator
 from cook2ltl.domain.actions import Call
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.pipeline.records import Stats, TranslationFinished, Variant
 from cook2ltl.pipeline.translator import Translator, run
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.world.kitchens import grounding
 
 PRIMITIVES = "ai2thor"
 
@@ -49,8 +54,6 @@ class TaskPlanner:
         started = time.perf_counter()
         translator = self.translator
         if self.ground:
-            from cook2ltl.world.kitchens import grounding
-
             supply = (lambda: objects) if objects is not None else None
             translator = replace(translator, grounding=grounding(translator.primitives, scene=scene, objects=supply))
         events = run(instruction, self.spans, self.dependencies, translator)
@@ -75,15 +78,11 @@ def open_planner(model: str, library: Path | None, variant: Variant = Variant.AR
                  repairs: int = 2, ground: bool = True) -> Iterator[TaskPlanner]:
     """The production planner; the library file (default: the user's) and the kitchen that checks new
     reductions before they are cached (AR+A with `validate`, as `cook2ltl translate`) are closed on exit."""
-    from cook2ltl.assembly.backends import dependency_parser, load_model, span_extractor
-    from cook2ltl.assembly.translators import TranslateOptions, open_translator
-    from cook2ltl.domain.settings_file import load_settings
-    from cook2ltl.reduce.primitives import load_primitives
-
     # The planner grounds each plan in the kitchen it will run in, so the translator itself has no world.
     options = TranslateOptions(variant, check=None if validate else False, repairs=repairs, ground=False)
-    with open_translator(load_primitives(PRIMITIVES), load_model(model), library, options, ignore_notice) as translator:
-        yield TaskPlanner(translator, span_extractor(load_settings()), dependency_parser(), ground)
+    with open_translator(load_primitives(PRIMITIVES), backends.load_model(model), library, options,
+                         ignore_notice) as translator:
+        yield TaskPlanner(translator, backends.span_extractor(load_settings()), backends.dependency_parser(), ground)
 
 
 def ignore_notice(notice: str) -> None:

@@ -28,6 +28,7 @@ from cook2ltl.assembly.manifest import (
     state_of,
 )
 from cook2ltl.errors import UserError
+from cook2ltl.parse.training import train as training
 
 
 @dataclass(frozen=True)
@@ -124,8 +125,6 @@ def _write_atomically(target: Path, sources) -> None:
 
 
 def _train(entry: ModelEntry) -> Iterator[ProvisionEvent]:
-    from cook2ltl.parse.training.train import TrainConfig, train
-
     if paths.inside_package(paths.models_dir()):
         raise UserError(f"{entry.name} is trained from models/{entry.data} of a checkout of cook2ltl, which an "
                         "installed wheel does not carry.", "run `make models` once in a checkout: the model "
@@ -136,7 +135,8 @@ def _train(entry: ModelEntry) -> Iterator[ProvisionEvent]:
     target = model_path(entry)
     partial = target.with_name(target.name + ".partial")
     shutil.rmtree(partial, ignore_errors=True)
-    steps = train(paths.models_dir() / entry.data, model_path(encoder) / "model", partial, TrainConfig())
+    steps = training.train(paths.models_dir() / entry.data, model_path(encoder) / "model", partial,
+                           training.TrainConfig())
     for progress in steps:
         yield ProvisionEvent(entry.name, f"training, epoch {progress.epoch}, loss {progress.loss:.1f}",
                     progress.step, progress.total_steps)

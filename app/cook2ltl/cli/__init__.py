@@ -12,6 +12,7 @@ import click
 import typer
 from typer.core import TyperGroup
 
+from cook2ltl import offline
 from cook2ltl.errors import UserError, require_utf8
 from cook2ltl.text_safety import literal, styled, terminal
 
@@ -65,7 +66,7 @@ def open_app_by_default(context: typer.Context) -> None:
 def app_command(recipe: Optional[Path] = typer.Argument(None, show_default=False,
                                                         help="A recipe file to open in the editor.")) -> None:
     """Open the app: translate a recipe, review the action library, roll formulas out in the kitchen."""
-    from cook2ltl.ui.app import run_app
+    from cook2ltl.ui.app import run_app  # startup: Textual and the app load only for `cook2ltl app`
 
     run_app(recipe)
 
@@ -73,6 +74,7 @@ def app_command(recipe: Optional[Path] = typer.Argument(None, show_default=False
 @app.command("doctor")
 def doctor_command() -> None:
     """Check the whole stack offline and say what is missing and the command that fixes it."""
+    # startup: the checks load when `cook2ltl doctor` runs, not with every command
     from cook2ltl.assembly.doctor import run_checks
 
     console = terminal()
@@ -88,8 +90,6 @@ def doctor_command() -> None:
 
 
 def main() -> None:
-    from cook2ltl import offline
-
     offline.enforce()
     try:
         for argument in sys.argv[1:]:  # once here, rather than in every command that stores or prints text

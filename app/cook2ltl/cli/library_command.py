@@ -15,6 +15,10 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
+from cook2ltl import paths
+from cook2ltl.errors import UserError
+from cook2ltl.files import decoded, read_bytes, read_stdin
+from cook2ltl.paths import shown, user_path
 from cook2ltl.reduce.validation import CheckStatus
 from cook2ltl.text_safety import literal, styled, terminal
 
@@ -29,7 +33,7 @@ CHECK_STYLE = {CheckStatus.PASSED: "green", CheckStatus.FAILED: "bold red", Chec
 
 def _open(library: Path | None, read_only: bool = False):
     """The library; `read_only` for a command that only reads (it then never waits for another's write)."""
-    from cook2ltl import paths
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library import Library
 
     library = paths.user_path(library, "--library") if library else None
@@ -37,6 +41,7 @@ def _open(library: Path | None, read_only: bool = False):
 
 
 def _by(by: str | None) -> str:
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library import reviewer
 
     return by or reviewer()
@@ -50,9 +55,8 @@ def list_command(library: Optional[Path] = LibraryOption,
                                                                  "best match first.")) -> None:
     """Every entry: id, primitive set, action, status, kitchen check, version, reviewer and model."""
     if status is not None and status not in STATUS_STYLE:
-        from cook2ltl.errors import UserError
-
         raise UserError(f"--status {status!r} is not one of {', '.join(STATUS_STYLE)}.", "leave it out to list all.")
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.store import NO_PLAN
 
     store = _open(library, read_only=True)
@@ -75,6 +79,7 @@ def list_command(library: Optional[Path] = LibraryOption,
 @library_app.command("show")
 def show_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
     """One entry: body, status and reviewer, kitchen check and its problems, intended effect, provenance, version."""
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.effect import shown_effect
     from cook2ltl.library.store import shown_body
 
@@ -136,6 +141,7 @@ def edit_command(entry_id: int,
                  ) -> None:
     """Replace an entry's body (checked line by line, run in the kitchen) or its intended effect (checked atom by
     atom), or both: stored as a new version, pending. A new effect alone keeps the body's kitchen check."""
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.body_check import body_problems
     from cook2ltl.library.effect import KEEP
     from cook2ltl.library.recheck import Recheck, live_verbs
@@ -172,6 +178,7 @@ def edit_command(entry_id: int,
 
 
 def _save(store, entry, body: str, by: str | None, checked, note: str, effect, console: Console) -> None:
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.effect import shown_effect
 
     # `expected`: if someone approved or edited the entry meanwhile, nothing is saved over their change.
@@ -183,7 +190,7 @@ def _save(store, entry, body: str, by: str | None, checked, note: str, effect, c
 
 def _effect_option(atoms: list[str] | None, clear: bool, no_body: bool):
     """The edit's effect: KEEP, None (--clear-effect), () (--effect none) or the atoms, checked."""
-    from cook2ltl.errors import UserError
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.effect import KEEP, checked_effect
 
     if atoms and clear:
@@ -199,9 +206,8 @@ def _effect_option(atoms: list[str] | None, clear: bool, no_body: bool):
 
 def _read_body(body_file: str) -> str:
     """The body from a regular file or standard input: at most limits.BODY_BYTES of UTF-8 text."""
-    from cook2ltl.files import decoded, read_bytes, read_stdin
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.limits import BODY_BYTES
-    from cook2ltl.paths import shown, user_path
 
     hint = "give a text file with one call per line, or - to read standard input."
     if body_file == "-":
@@ -211,7 +217,7 @@ def _read_body(body_file: str) -> str:
 
 
 def _primitive_set(choice: str, name: str):
-    from cook2ltl.errors import UserError
+    # startup: `cook2ltl --help` imports this module; pydantic and the kitchen load when the command runs
     from cook2ltl.reduce.primitives import load_primitives
 
     primitive_set = load_primitives(choice)
@@ -222,6 +228,7 @@ def _primitive_set(choice: str, name: str):
 
 
 def _kitchen_check(entry, body, primitive_set, verbs):
+    # startup: `cook2ltl --help` imports this module; pydantic and the kitchen load when the command runs
     from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
     from cook2ltl.library.recheck import Recheck, recheck
 
@@ -237,6 +244,7 @@ def _kitchen_check(entry, body, primitive_set, verbs):
 @library_app.command("history")
 def history_command(entry_id: int, library: Optional[Path] = LibraryOption) -> None:
     """Every body the entry had, who wrote it and when, and who approved or rejected which version."""
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.store import shown_body
 
     store = _open(library, read_only=True)
@@ -267,6 +275,7 @@ def undo_command(entry_id: int, library: Optional[Path] = LibraryOption, by: Opt
 @library_app.command("export")
 def export_command(file: Path, library: Optional[Path] = LibraryOption) -> None:
     """Write every entry with its history to a JSON file, for another lab or robot."""
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.exchange import export_library
 
     store = _open(library, read_only=True)
@@ -284,6 +293,7 @@ def import_command(file: Path, library: Optional[Path] = LibraryOption, by: Opti
                                                                      "body failed the kitchen check (as approve "
                                                                      "--force).")) -> None:
     """Add the entries of an export file: new ones added, the same ones left, conflicts reported, never overwritten."""
+    # startup: `cook2ltl --help` imports this module; the library (sqlite-utils) loads when the command runs
     from cook2ltl.library.exchange import import_library
 
     report = import_library(_open(library), file, _by(by), replace_pending, force)

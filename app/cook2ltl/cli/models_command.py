@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import Optional
 
@@ -13,7 +14,9 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from rich.table import Table
 
 from cook2ltl import paths
+from cook2ltl.assembly import backends
 from cook2ltl.assembly.manifest import ModelState, load_manifest, state_of
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.text_safety import literal, styled, terminal, visible
 
 models_app = typer.Typer(help="List, provision and evaluate the models.", invoke_without_command=True, no_args_is_help=False)
@@ -42,6 +45,7 @@ def provision_command(
     force: bool = typer.Option(False, help="Fetch or train again even if present."),
 ) -> None:
     """Fetch or train what is missing into the per-user cache, and link it under models/."""
+    # startup: `cook2ltl --help` imports this module; provisioning loads when the command runs
     from cook2ltl.assembly.provision import provision
 
     manifest = load_manifest()
@@ -88,17 +92,14 @@ def eval_ner_command(
     as_json: bool = typer.Option(False, "--json"),
 ) -> None:
     """Strict span micro-F1 on the held-out recipes, overall and per label."""
-    from dataclasses import replace
-
-    from cook2ltl.assembly.backends import SPAN_MODEL, span_extractor
-    from cook2ltl.domain.settings_file import load_settings
+    # startup: `cook2ltl --help` imports this module; the training code loads when the command runs
     from cook2ltl.parse.training.validate import validate
 
     settings = load_settings()
     if checkpoint:
         settings = replace(settings, ner=replace(settings.ner, checkpoint=paths.user_path(checkpoint, "--checkpoint")))
-    data = paths.models_dir() / load_manifest()[SPAN_MODEL].data
-    report = validate(span_extractor(settings), data)
+    data = paths.models_dir() / load_manifest()[backends.SPAN_MODEL].data
+    report = validate(backends.span_extractor(settings), data)
     rows = {"overall": report.overall, **{label.value: score for label, score in report.per_label.items()}}
     if as_json:
         typer.echo(json.dumps({name: {"f1": round(s.f1, 4), "precision": round(s.precision, 4),

@@ -8,7 +8,11 @@ import typer
 from rich.console import Console
 from rich.text import Text
 
+from cook2ltl.assembly import backends
 from cook2ltl.domain.recipe import ARGUMENT_LABELS, Label, ParsedRecipe
+from cook2ltl.domain.settings_file import load_settings
+from cook2ltl.parse import parse_recipe
+from cook2ltl.parse.serialize import recipe_json
 from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import json_text, literal, styled, terminal
 
@@ -27,13 +31,8 @@ def parse_command(
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
 ) -> None:
     """Split a recipe into steps and parse each into Verb(What, Where, How, Time, Temperature) frames."""
-    from cook2ltl.assembly.backends import dependency_parser, span_extractor
-    from cook2ltl.domain.settings_file import load_settings
-    from cook2ltl.parse import parse_recipe
-    from cook2ltl.parse.serialize import recipe_json
-
     text = read_recipe(recipe)
-    spans, dependencies = span_extractor(load_settings()), dependency_parser()
+    spans, dependencies = backends.span_extractor(load_settings()), backends.dependency_parser()
     started = time.perf_counter()
     parsed = parse_recipe(text, spans, dependencies)
     elapsed = time.perf_counter() - started

@@ -10,9 +10,13 @@ import typer
 from rich.console import Console
 from rich.text import Text
 
+from cook2ltl import files
 from cook2ltl.errors import UserError
+from cook2ltl.ltl.printer import to_unicode
 from cook2ltl.pipeline.records import Variant
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import json_text, literal, styled, terminal
+from cook2ltl.world.effects import fact_text
 
 VERDICT_STYLE = {"satisfied": "bold green", "presumably_true": "green", "presumably_false": "yellow",
                  "violated": "bold red"}
@@ -21,8 +25,6 @@ WRITER_STYLE = {"model": "magenta", "library": "cyan", "recipe": "green", "plann
 
 def is_recipe(target: str) -> bool:
     """A rollout target is a recipe when it names a file (or is -, standard input)."""
-    from cook2ltl import files
-
     if target == "-":
         return True
     try:
@@ -35,6 +37,7 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
                    validate: bool | None, repairs: int | None, ground: bool, as_json: bool) -> NoReturn:
     """Translate the recipe with the world model on, roll it out, and exit 0 when every step reached its
     actions' effects and the formula holds, else 1."""
+    # startup: `cook2ltl --help` imports this module; the pipeline loads when the command runs
     from cook2ltl.assembly.translators import TranslateOptions
     from cook2ltl.cli.translating import open_translator, translated
     from cook2ltl.pipeline.world_rollout import (
@@ -46,7 +49,6 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
         recipe_rollout_json,
         roll_out_recipe,
     )
-    from cook2ltl.preprocess.recipe_file import read_recipe
     from cook2ltl.reduce.primitives import load_primitives
 
     if not ground:
@@ -81,8 +83,6 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
 
 
 def show_began(console: Console, began, recipe: str, translation) -> None:
-    from cook2ltl.ltl.printer import to_unicode
-
     name = "standard input" if recipe == "-" else Path(recipe).name
     console.print(styled((name, "bold"), (f" · {translation.primitives} primitives · {began.steps} steps, "
                                           f"{began.actions} actions · the world model", "dim")), highlight=False)
@@ -95,8 +95,6 @@ def show_began(console: Console, began, recipe: str, translation) -> None:
 def show_action(console: Console, rolled) -> None:
     """An action as it is rolled out: its lines (✓ applied, ✗ refused), who wrote each, what changed, and the
     recipe formula's progress after it."""
-    from cook2ltl.world.effects import fact_text
-
     run, step = rolled.run, rolled.step
     if run.result is step.actions[0]:
         _step_title(console, step)
@@ -135,8 +133,6 @@ def show_step_end(console: Console, step) -> None:
 
 def _progress(verdict, remaining) -> Text:
     """The verdict first, then what remains: a long remainder is cut at the line's end (--json has it whole)."""
-    from cook2ltl.ltl.printer import to_unicode
-
     value = verdict.value
     return (literal(f"{value.replace('_', ' '):<17}", style=VERDICT_STYLE[value]) + literal("remaining ", style="dim")
             + literal(to_unicode(remaining)))

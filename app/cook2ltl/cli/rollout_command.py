@@ -14,7 +14,10 @@ from rich.console import Console
 from cook2ltl import paths
 from cook2ltl.assembly.backends import DEFAULT_MODEL
 from cook2ltl.cli.recipe_rollout import is_recipe, rollout_recipe
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
+from cook2ltl.ltl.parser import LTLSyntaxError, parse
+from cook2ltl.ltl.printer import to_unicode
 from cook2ltl.pipeline.records import Variant
 from cook2ltl.text_safety import json_text, literal, styled, terminal
 
@@ -63,9 +66,9 @@ def rollout_command(
     Exits with 0 when the task's goal holds at the end (for a formula: when the formula does; for a recipe: when
     every step reached its effects and the formula holds), else 1.
     """
+    # startup: `cook2ltl --help` imports this module; the kitchen and the planner load when the command runs
     from cook2ltl.assembly.planning import open_planner
     from cook2ltl.assembly.trial import TrialDone, run_trial, trial_json
-    from cook2ltl.domain.settings_file import load_settings
     from cook2ltl.execution.launcher import start_kitchen
     from cook2ltl.execution.tasks import set_up
 
@@ -119,9 +122,9 @@ def rollout_command(
 
 def read_target(target: str, reference: bool):
     """(task or None, formula or None): a task is planned later unless its reference plan is asked for."""
+    # startup: `cook2ltl --help` imports this module; the tasks and the trial load when the command runs
     from cook2ltl.assembly.trial import reference_formula
     from cook2ltl.execution.tasks import find_task, load_tasks
-    from cook2ltl.ltl.parser import LTLSyntaxError, parse
 
     task = find_task(target)
     if task is not None:
@@ -137,6 +140,7 @@ def read_target(target: str, reference: bool):
 
 
 def _scene(name: str) -> str:
+    # startup: `cook2ltl --help` imports this module; the kitchen scenes load when the command runs
     from cook2ltl.simulator.scenes import UnknownScene, canonical_scene
 
     try:
@@ -146,6 +150,7 @@ def _scene(name: str) -> str:
 
 
 def show_tasks(console: Console, as_json: bool) -> None:
+    # startup: `cook2ltl --help` imports this module; the tasks (pydantic) load when the command runs
     from cook2ltl.execution.tasks import PARAPHRASES, load_tasks, task_json
 
     tasks = load_tasks()
@@ -167,8 +172,6 @@ def show_tasks(console: Console, as_json: bool) -> None:
 
 
 def show_header(console: Console, task, plan, formula, scene: str, backend: str) -> None:
-    from cook2ltl.ltl.printer import to_unicode
-
     title = f"task {task.id} · “{task.instruction}”" if task else "formula"
     console.print(styled((title, "bold"), (f" · {scene} · {backend} kitchen", "dim")), highlight=False)
     if task is not None:
@@ -184,8 +187,8 @@ def show_header(console: Console, task, plan, formula, scene: str, backend: str)
 
 def show_event(console: Console, event, atoms: int) -> None:
     """One rollout event as it happens; `atoms` is how many atoms the formula has."""
+    # startup: `cook2ltl --help` imports this module; the rollout loads when the command runs
     from cook2ltl.execution.rollout import ActionRefused, RolloutStarted, Stepped
-    from cook2ltl.ltl.printer import to_unicode
 
     if isinstance(event, RolloutStarted) and event.unobservable:
         never = ", ".join(a.text for a in event.unobservable)
@@ -205,6 +208,7 @@ def show_event(console: Console, event, atoms: int) -> None:
 
 
 def show_outcome(console: Console, trial) -> None:
+    # startup: `cook2ltl --help` imports this module; the trial loads when the command runs
     from cook2ltl.assembly.trial import explain
 
     result = trial.rollout

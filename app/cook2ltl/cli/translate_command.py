@@ -10,9 +10,11 @@ from rich.console import Console
 
 from cook2ltl import paths
 from cook2ltl.assembly.backends import DEFAULT_MODEL
+from cook2ltl.errors import UserError
 from cook2ltl.pipeline.records import Translation, Variant
 from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import json_text, terminal
+from cook2ltl.world.export import export_pddl
 
 
 def translate_command(
@@ -43,6 +45,7 @@ def translate_command(
                                         "and the plan as PDDL into this folder."),
 ) -> None:
     """Translate a recipe into LTL formulas over the robot's primitive actions (the paper's Algorithm 1)."""
+    # startup: `cook2ltl --help` imports this module; the pipeline loads when the command runs
     from cook2ltl.assembly.translators import TranslateOptions
     from cook2ltl.cli.translating import open_translator, translated
     from cook2ltl.pipeline.report import show
@@ -66,9 +69,6 @@ def translate_command(
 
 
 def _export(translation: Translation, grounding, folder: Path, errors: Console) -> None:
-    from cook2ltl.errors import UserError
-    from cook2ltl.world.export import export_pddl
-
     if grounding is None or translation.world_start is None:
         raise UserError("--pddl needs the world model.", "drop --no-ground, or use a primitive set with a [world].")
     results = [r for step in translation.steps for r in step.actions]

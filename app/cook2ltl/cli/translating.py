@@ -11,10 +11,12 @@ import typer
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
+from cook2ltl.assembly import backends, translators
 from cook2ltl.assembly.translators import TranslateOptions
 from cook2ltl.domain.actions import PrimitiveSet
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.pipeline.records import ActionDone, Translation, TranslationFinished, TranslationStarted
-from cook2ltl.pipeline.translator import Translator
+from cook2ltl.pipeline.translator import Translator, run
 from cook2ltl.text_safety import literal, visible
 
 
@@ -22,23 +24,16 @@ from cook2ltl.text_safety import literal, visible
 def open_translator(primitives: PrimitiveSet, model: str, library: Path | None, options: TranslateOptions,
                     errors: Console) -> Iterator[Translator]:
     """The translator of the command's options; its library and kitchen are closed on exit."""
-    from cook2ltl.assembly import translators
-    from cook2ltl.assembly.backends import load_model
-
     def notice(text: str) -> None:
         errors.print(literal(text, "yellow"))
 
-    with translators.open_translator(primitives, load_model(model), library, options, notice) as translator:
+    with translators.open_translator(primitives, backends.load_model(model), library, options, notice) as translator:
         yield translator
 
 
 def translated(text: str, translator: Translator, errors: Console) -> Translation:
     """The recipe parsed and translated, its progress drawn on `errors`; exit 130 if stopped before the end."""
-    from cook2ltl.assembly.backends import dependency_parser, span_extractor
-    from cook2ltl.domain.settings_file import load_settings
-    from cook2ltl.pipeline.translator import run
-
-    events = run(text, span_extractor(load_settings()), dependency_parser(), translator)
+    events = run(text, backends.span_extractor(load_settings()), backends.dependency_parser(), translator)
     columns = (TextColumn("{task.description}", markup=False), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
     # Off a terminal the bar draws nothing, not even the blank line a transient bar leaves before an error.
     with Progress(*columns, console=errors, transient=True, disable=not errors.is_terminal) as progress:

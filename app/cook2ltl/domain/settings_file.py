@@ -19,6 +19,7 @@ def load_settings(path: Path | None = None) -> Settings:
         raw = files.read_toml(path, SETTINGS_BYTES, "settings file", "give COOK2LTL_CONFIG a TOML file of settings.")
     except files.MissingFile:
         return Settings()
+    # startup: pydantic (~100 ms) loads only when a settings file exists
     from cook2ltl.domain.settings_schema import settings_from
 
     return settings_from(raw, path)

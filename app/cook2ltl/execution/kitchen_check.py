@@ -27,8 +27,11 @@ import time
 
 from cook2ltl.domain.actions import Action, Call, PrimitiveSet
 from cook2ltl.errors import UserError
+from cook2ltl.execution.launcher import start_embedded
 from cook2ltl.execution.plan_run import PlanRun, meanings
 from cook2ltl.reduce.validation import LineProblem, RecipeSoFar, Validation
+from cook2ltl.thor_types import liquids
+from cook2ltl.world.stand_ins import Casting, build_frame
 
 
 def unsupported(primitives: PrimitiveSet) -> tuple[str, ...]:
@@ -52,9 +55,6 @@ class KitchenValidator:
     def validate(self, action: Action, plan: tuple[Call, ...], so_far: RecipeSoFar | None = None) -> Validation:
         """The plan run alone, in the kitchen that fits it best with its shut-away things set out, or, given
         `so_far`, after the recipe's earlier lines in the recipe's own kitchen."""
-        from cook2ltl.thor_types import liquids
-        from cook2ltl.world.stand_ins import Casting, build_frame
-
         started = time.perf_counter()
         frame = build_frame(plan, liquids()) if so_far is None else Casting(so_far.scene, so_far.binding)
         if frame.missing:
@@ -73,8 +73,6 @@ class KitchenValidator:
 
     def _kitchen(self):
         if self._controller is None:
-            from cook2ltl.execution.launcher import start_embedded
-
             self._controller = start_embedded("FloorPlan1")
         return self._controller
 

@@ -23,6 +23,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from platformdirs import user_cache_dir
+
+from cook2ltl import offline
 from cook2ltl.errors import UserError
 from cook2ltl.execution.unavailable import KitchenUnavailable
 from cook2ltl.paths import user_path
@@ -131,7 +134,7 @@ def start_thor(
         if build.executable is not None:
             controller = Controller(local_executable_path=str(build.executable), **common)
         else:
-            import ai2thor.platform
+            import ai2thor.platform  # heavy: ai2thor loads only when a THOR build starts
 
             platform = getattr(ai2thor.platform, build.platform)
             controller = Controller(platform=platform, commit_id=build.commit_id, **common)
@@ -209,7 +212,7 @@ def embedded_executable() -> Path:
 def run_player() -> None:
     """The embedded kitchen's entry point: the player, ended as soon as the process that launched it is gone,
     including one killed while the player was still starting (its parent is then already someone else)."""
-    from cook2ltl import offline
+    # only the kitchen's own process runs the player: msgpack and the simulator never load in the launching one
     from cook2ltl.simulator import player
 
     offline.enforce()  # the kitchen needs no network; under COOK2LTL_NO_NETWORK=1 it cannot reach one either
@@ -219,8 +222,6 @@ def run_player() -> None:
 
 
 def _cache_dir() -> Path:
-    from platformdirs import user_cache_dir
-
     cache = os.environ.get("COOK2LTL_KITCHEN_CACHE")
     folder = (user_path(cache, "$COOK2LTL_KITCHEN_CACHE") if cache else Path(user_cache_dir("cook2ltl"))) / "kitchen"
     if any(c.isspace() for c in str(folder)):
@@ -317,7 +318,7 @@ def _first_lines(err: BaseException, limit: int = 3) -> str:
 
 def _controller_class():
     try:
-        from cook2ltl.execution.controller import KitchenController
+        from cook2ltl.execution.controller import KitchenController  # heavy, optional: it imports ai2thor
     except ImportError as err:
         raise KitchenUnavailable(f"the ai2thor package is not installed ({err}); pip install ai2thor") from err
     return KitchenController
@@ -325,7 +326,7 @@ def _controller_class():
 
 def _controller_commit() -> str | None:
     try:
-        from ai2thor.build import COMMIT_ID
+        from ai2thor.build import COMMIT_ID  # heavy, optional: ai2thor loads only when a THOR build is looked for
     except ImportError:
         return None
     return COMMIT_ID

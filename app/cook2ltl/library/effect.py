@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from enum import Enum
 
 from cook2ltl.errors import UserError
+from cook2ltl.world.effects import parse_template, template_text
 
 HINT = ("write atoms such as boiled(what) or in(what, fridge): a predicate over the action's slots (what, where, "
         "how) or kitchen objects; done and ready are never effects.")
@@ -26,8 +27,6 @@ KEEP = Keep.KEEP  # Library.edit(effect=KEEP): the entry keeps the effect it has
 def checked_effect(effect: Sequence[str] | None, where: str = "effect") -> tuple[str, ...] | None:
     """The effect as stored: each atom checked, written one way (`in(what, fridge)`), duplicates dropped.
     A bad atom is a UserError that starts with `where`."""
-    from cook2ltl.world.effects import parse_template, template_text  # only when an effect is written
-
     if effect is None:
         return None
     if isinstance(effect, str):  # a lone string would be read letter by letter

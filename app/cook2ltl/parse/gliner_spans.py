@@ -7,6 +7,7 @@ import threading
 from pathlib import Path
 from typing import Mapping, Sequence
 
+from cook2ltl import offline
 from cook2ltl.domain.recipe import Label, Span
 from cook2ltl.errors import UserError
 
@@ -52,12 +53,11 @@ class GlinerSpans:
 
 
 def load_gliner(checkpoint: Path, threads: int | None = None):
-    from cook2ltl import offline
-
     offline.enforce()
     if not (checkpoint / "config.json").exists() and not (checkpoint / "gliner_config.json").exists():
         raise UserError(f"{checkpoint} is not a GLiNER checkpoint folder (no config.json).",
                         "point ner.checkpoint at a folder saved by GLiNER, or run `make models`.")
+    # heavy: torch and GLiNER (seconds) load with the span model, after offline.enforce()
     import torch
     from gliner import GLiNER
 

@@ -33,7 +33,7 @@ class SpacyDependencies:
 
 
 def load_spacy(model: str):
-    import spacy
+    import spacy  # heavy: spaCy (~2 s) loads with the dependency parser
 
     try:
         # Only the parser is needed; the rest would cost time on every sentence.

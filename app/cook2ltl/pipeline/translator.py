@@ -54,11 +54,12 @@ from cook2ltl.pipeline.records import (
 )
 from cook2ltl.reduce.action import actions_of, known_objects
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders
+from cook2ltl.reduce.grounded import reduce_in_world
 from cook2ltl.reduce.intents import Intents
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, offered_verbs
 from cook2ltl.reduce.repair import Checked, reduce_checked
-from cook2ltl.reduce.validation import CheckStatus, PlanValidator, RecipeSoFar, Validation
+from cook2ltl.reduce.validation import CheckStatus, LineProblem, PlanValidator, RecipeSoFar, Validation
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
 from cook2ltl.world.effects import cast, template_text
 from cook2ltl.world.planner import all_reached
@@ -131,8 +132,6 @@ def translate(parsed: ParsedRecipe, translator: Translator, cancel: threading.Ev
 def world_validation(grounded: PlanCheck) -> Validation:
     """The world model's verdict where no kitchen checks the plan: the plan kept applies by construction, so it
     passes when it reaches the action's intended effect."""
-    from cook2ltl.reduce.validation import LineProblem
-
     problems = tuple(LineProblem(0, "world model", problem) for problem in grounded.problems)
     return Validation(grounded.effect_reached, problems, "world model", 0.0)
 
@@ -225,8 +224,6 @@ class _Run:
 
     def _reduce_in_world(self, action: Action, effect: tuple) -> Checked:
         """State-aware decoding: every line the model writes can be applied where the recipe has got to."""
-        from cook2ltl.reduce.grounded import reduce_in_world
-
         reduction = reduce_in_world(action, self.t.primitives, [v.verb for v in self.verbs], self.t.model,
                                     self.t.settings, self.t.grounding.world, self.world_state, effect)
         return Checked(reduction, reduction.body, None)

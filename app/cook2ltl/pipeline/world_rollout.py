@@ -25,6 +25,7 @@ from cook2ltl.ltl.printer import to_spot, to_unicode
 from cook2ltl.ltl.progress import Verdict, progress, verdict
 from cook2ltl.pipeline.records import ActionResult, StepResult, Translation
 from cook2ltl.world.effects import fact_text
+from cook2ltl.world.kitchens import world_of
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.planner import reached
 from cook2ltl.world.world import World
@@ -127,8 +128,6 @@ def roll_out_recipe(translation: Translation, primitives: PrimitiveSet, world: W
     """Replay `translation` (made with `primitives` and the world model) from the state before its first step.
     Raises UserError for a translation made without the world model."""
     if world is None:
-        from cook2ltl.world.kitchens import world_of
-
         world = world_of(primitives)
     if world is None or translation.world_start is None:
         raise UserError("A recipe rollout needs the world model, and this translation was made without it.",

@@ -4,6 +4,7 @@ that is not text."""
 from __future__ import annotations
 
 from cook2ltl import files, paths
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
 
 FILE_HINT = "give a text file, or - to read standard input."
@@ -13,8 +14,6 @@ TOO_LARGE_HINT = "split the recipe into smaller files, or raise [limits] recipe_
 def read_recipe(source: str, max_bytes: int | None = None) -> str:
     """The recipe's text; `max_bytes` defaults to the settings' [limits] recipe_bytes."""
     if max_bytes is None:
-        from cook2ltl.domain.settings_file import load_settings
-
         max_bytes = load_settings().limits.recipe_bytes
     if source == "-":
         data, name = files.read_stdin(max_bytes, TOO_LARGE_HINT), "standard input"

@@ -30,7 +30,7 @@ def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
     token or `max_tokens`. Evaluation goes on from the tokens `llama` already holds (a shared prefix);
     `keep_going(tokens so far)` may end it after any token. The token that ends it is kept: one token can
     close a line and open the next (")\n"), and cutting it would leave the line unfinished."""
-    import llama_cpp
+    import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
     vocab = llama._model.vocab
     sampler = llama_cpp.llama_sampler_init_grammar(vocab, grammar.encode(), b"root")
@@ -69,7 +69,7 @@ def _best_admitted(sampler, scores: np.ndarray) -> int | None:
 
 
 def _admitted_argmax(sampler, scores: np.ndarray, ids: np.ndarray) -> int | None:
-    import llama_cpp
+    import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
     data = np.zeros(len(ids), dtype=_TOKEN_DATA)
     data["id"] = ids

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from cook2ltl.domain.actions import Action, Usage
+from cook2ltl.reduce.effect_writer import write_effect
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.world.effects import Template, intended_effect, parse_template, table_effect, verb_table
 from cook2ltl.world.logic import Fact, State
@@ -30,8 +31,6 @@ class Intents:
             if known is None and not (write and self.model is not None):
                 return ()
             if known is None:
-                from cook2ltl.reduce.effect_writer import write_effect
-
                 known, usage = write_effect(action, self.model, self.world, state, verb_table())
                 self.written.append(usage)
             self._known[key] = known or ()

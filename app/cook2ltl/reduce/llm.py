@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Protocol
 
+from cook2ltl import offline
 from cook2ltl.domain.actions import Usage
 from cook2ltl.domain.settings import Limits
 from cook2ltl.errors import UserError
@@ -89,6 +90,7 @@ class LlamaModel:
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
                  stop: Callable[[str], bool] | None = None) -> Completion:
         llama = self._loaded()
+        # heavy: numpy (~150 ms) loads with the first completion
         from cook2ltl.reduce.decoding import GrammarRejected, greedy_tokens
 
         started = time.perf_counter()
@@ -120,7 +122,7 @@ class LlamaModel:
     def complete_lines(self, static: str, dynamic: str, next_lines: Callable[[str], list[str] | None],
                        tokens_per_line: int) -> Completion:
         llama = self._loaded()
-        from cook2ltl.reduce.decoding import greedy_tokens
+        from cook2ltl.reduce.decoding import greedy_tokens  # heavy: numpy (~150 ms) loads with the first completion
 
         started = time.perf_counter()
         prefix = llama.tokenize(static.encode())
@@ -178,14 +180,14 @@ class LlamaModel:
     def _state_file(self, static: str) -> Path | None:
         if self.state_dir is None:
             return None
-        import llama_cpp
+        import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
         # Valid for this model file, static part, context size and llama.cpp build only.
         key = hashlib.sha256(f"{self.path.stat().st_size}|{CONTEXT_TOKENS}|{llama_cpp.__version__}|{static}".encode())
         return self.state_dir / f"{self.name}-{key.hexdigest()[:16]}.state"
 
     def _restore(self, llama, path: Path, prefix: list[int]) -> bool:
-        import llama_cpp
+        import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
         tokens = (llama_cpp.llama_token * CONTEXT_TOKENS)()
         count = ctypes.c_size_t(0)
@@ -199,7 +201,7 @@ class LlamaModel:
         return True
 
     def _save(self, llama, path: Path) -> None:
-        import llama_cpp
+        import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
         path.parent.mkdir(parents=True, exist_ok=True)
         partial = path.with_suffix(".partial")
@@ -209,11 +211,9 @@ class LlamaModel:
 
     def _loaded(self):
         if self._llama is None:
-            from cook2ltl import offline
-
             offline.enforce()  # sets GOMP_SPINCOUNT before llama.cpp starts its threads
             try:
-                from llama_cpp import Llama
+                from llama_cpp import Llama  # heavy, optional: loaded with the model, after offline.enforce()
             except ImportError as error:
                 raise UserError("llama-cpp-python is not installed.", "install the `llm` extra: pip install -e '.[llm]'.") from error
             self._llama = Llama(model_path=str(self.path), n_ctx=CONTEXT_TOKENS, n_threads=self.threads,

@@ -15,6 +15,7 @@ from dataclasses import replace
 from functools import cache
 from pathlib import Path
 
+from cook2ltl.paths import assets_dir
 from cook2ltl.simulator.state import ABILITIES, Agent, KitchenState, Thing
 from cook2ltl.thor_types import load_type_rules
 
@@ -26,9 +27,7 @@ class UnknownScene(ValueError):
 
 
 def kitchens_dir() -> Path:
-    from cook2ltl.paths import assets_dir  # $COOK2LTL_ASSETS, checked as every path a user gives
-
-    return assets_dir() / "kitchens"
+    return assets_dir() / "kitchens"  # $COOK2LTL_ASSETS, checked as every path a user gives
 
 
 def scene_names() -> list[str]:

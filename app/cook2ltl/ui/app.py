@@ -17,9 +17,11 @@ from textual.app import App
 from textual.binding import Binding
 from textual.screen import Screen
 
+from cook2ltl import offline, paths
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.errors import UserError
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import visible
 from cook2ltl.ui.commands import MainCommands
 from cook2ltl.ui.messages import TranslationDone
@@ -116,8 +118,6 @@ def binding_ids() -> set[str]:
 
 
 def _log_traceback(error: BaseException) -> Path | None:
-    from cook2ltl import paths
-
     path = paths.data_dir() / "ui-errors.log"
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -131,13 +131,9 @@ def _log_traceback(error: BaseException) -> Path | None:
 
 def run_app(recipe_path: str | Path | None = None) -> None:
     """Open the app, on a recipe file if one is given (read now, so a bad file is a CLI error)."""
-    from cook2ltl import offline
-
     offline.enforce()  # before any model library is imported, however the app was started
     text = ""
     if recipe_path is not None:
-        from cook2ltl.preprocess.recipe_file import read_recipe
-
         if str(recipe_path) == "-":
             raise UserError("The app reads its keys from the terminal, not a recipe from standard input.",
                             "give a recipe file, or paste the recipe into the app's editor.")

@@ -7,16 +7,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from cook2ltl.errors import UserError
+from cook2ltl.pipeline.report import show
+from cook2ltl.pipeline.serialize import translation_json
+from cook2ltl.text_safety import json_text, terminal
 
 if TYPE_CHECKING:
     from cook2ltl.pipeline.records import Translation
 
 
 def write_translation(translation: Translation, path: Path) -> None:
-    from cook2ltl.pipeline.report import show
-    from cook2ltl.pipeline.serialize import translation_json
-    from cook2ltl.text_safety import json_text, terminal
-
     try:
         with path.open("w", encoding="utf-8") as handle:
             if path.suffix == ".json":

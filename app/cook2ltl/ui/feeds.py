@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 from textual.message import Message
 
 from cook2ltl.domain.settings import TranslateSettings
+from cook2ltl.reduce.llm import GenerationCancelled
 from cook2ltl.ui.messages import (
     ActionReduced,
     ObjectState,
@@ -73,8 +74,6 @@ class RecipeRolloutRequest:
 
 
 def translation_feed(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
-    from cook2ltl.reduce.llm import GenerationCancelled
-
     if not services.pipeline_lock.acquire(blocking=False):
         yield WorkProgress("waiting for the models: a rollout is planning …")
         services.pipeline_lock.acquire()
@@ -87,6 +86,7 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
 
 
 def _translating(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
+    # startup: the app opens before the pipeline loads; the first run in a worker loads it
     from cook2ltl.assembly.translators import TranslateOptions, build_translator
     from cook2ltl.pipeline.records import (
         ActionDone,
@@ -133,9 +133,9 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
 
 
 def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.Event) -> Iterator[Message]:
+    # startup: the app opens before the pipeline loads; the first run in a worker loads it
     from cook2ltl.assembly.trial import TrialDone, run_trial
     from cook2ltl.execution.rollout import ActionRefused, RolloutStarted, Stepped
-    from cook2ltl.reduce.llm import GenerationCancelled
 
     task, plan, formula = request.task, None, request.formula
     if formula is None:
@@ -168,6 +168,7 @@ def rollout_feed(services: Services, request: RolloutRequest, cancel: threading.
 
 def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cancel: threading.Event
                         ) -> Iterator[Message]:
+    # startup: the app opens before the pipeline loads; the first run in a worker loads it
     from cook2ltl.pipeline.world_rollout import ActionRolled, Began, RecipeRolledOut, StepRolled, roll_out_recipe
     from cook2ltl.reduce.primitives import load_primitives
 
@@ -198,6 +199,7 @@ def recipe_rollout_feed(services: Services, request: RecipeRolloutRequest, cance
 
 
 def _planner(services: Services, request: RolloutRequest, cancel: threading.Event):
+    # startup: the app opens before the pipeline loads; the first run in a worker loads it
     from cook2ltl.assembly.planning import PRIMITIVES, TaskPlanner, ignore_notice
     from cook2ltl.assembly.translators import TranslateOptions, build_translator
     from cook2ltl.reduce.primitives import load_primitives

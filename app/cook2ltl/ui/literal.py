@@ -33,6 +33,7 @@ def shown_styled(text: str, styles: Iterable[tuple[int, int, str]]) -> Content:
 
 def formula_text(formula, spot: bool = False) -> str | None:
     """The formula written in Unicode (or Spot) syntax; None when it is too large to write out."""
+    # startup: the app opens before the LTL printer (lark) loads
     from cook2ltl.ltl.limits import FormulaTooLarge
     from cook2ltl.ltl.printer import to_spot, to_unicode
 

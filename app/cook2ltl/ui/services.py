@@ -9,7 +9,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from cook2ltl import paths
+from cook2ltl.assembly import backends
 from cook2ltl.assembly.backends import DEFAULT_MODEL
+from cook2ltl.assembly.manifest import load_manifest
+from cook2ltl.domain.settings_file import load_settings
 
 if TYPE_CHECKING:
     from cook2ltl.domain.actions import PrimitiveSet
@@ -55,7 +59,7 @@ class Services:
         return model
 
     def library(self) -> Library:
-        from cook2ltl.library import Library
+        from cook2ltl.library import Library  # startup: the app opens before the library (sqlite-utils) loads
 
         return self._once("library", lambda: Library(self.library_path))
 
@@ -106,30 +110,23 @@ class OnePlanAtATime:
 def production_services() -> Services:
     """GLiNER, spaCy, llama.cpp, the user's library, the embedded kitchen and the kitchen check; nothing is
     loaded yet."""
-    from cook2ltl import paths
-
     def spans():
-        from cook2ltl.assembly.backends import span_extractor
-        from cook2ltl.domain.settings_file import load_settings
-
-        return span_extractor(load_settings())
+        return backends.span_extractor(load_settings())
 
     def dependencies():
-        from cook2ltl.assembly.backends import dependency_parser
-
-        return dependency_parser()
+        return backends.dependency_parser()
 
     def model(name: str):
-        from cook2ltl.assembly.backends import load_model
-
-        return load_model(name)
+        return backends.load_model(name)
 
     def kitchen(scene: str):
+        # startup: the app opens before the kitchen launcher (~4 ms) loads
         from cook2ltl.execution.launcher import start_kitchen
 
         return start_kitchen(scene, "embedded")
 
     def validator(primitives):
+        # startup: the app opens before the kitchen check (pydantic, lark) loads
         from cook2ltl.execution.kitchen_check import KitchenValidator
 
         return KitchenValidator(primitives)
@@ -139,7 +136,5 @@ def production_services() -> Services:
 
 def _language_models() -> tuple[str, ...]:
     """The GGUF models of the manifest (a TOML read), default first."""
-    from cook2ltl.assembly.manifest import load_manifest
-
     names = [entry.name for entry in load_manifest().values() if entry.file.endswith(".gguf")]
     return tuple(sorted(names, key=lambda name: name != DEFAULT_MODEL)) or (DEFAULT_MODEL,)

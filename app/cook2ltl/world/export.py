@@ -17,7 +17,7 @@ from cook2ltl.world.world import PROCESS, World
 
 
 def export_pddl(world: World, start: State, plan: Sequence[Call], effects: Sequence[Fact], folder: Path) -> list[Path]:
-    from unified_planning.io import PDDLWriter
+    from unified_planning.io import PDDLWriter  # heavy: unified-planning (~1 s) loads only for --pddl
 
     folder.mkdir(parents=True, exist_ok=True)
     lines, state = [], start

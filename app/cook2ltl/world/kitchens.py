@@ -5,9 +5,13 @@ from __future__ import annotations
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
 from cook2ltl.domain.actions import PrimitiveSet
+from cook2ltl.thor_types import liquids
 from cook2ltl.world.check import Grounding, Start
 from cook2ltl.world.pddl import load_domain
 from cook2ltl.world.planner import FastDownward, Planner
+from cook2ltl.world.recipe_kitchen import kitchen_state, read_kitchen
+from cook2ltl.world.stand_ins import best_frame, frame_in
+from cook2ltl.world.thor_kitchens import scene_objects, scene_start
 from cook2ltl.world.world import World
 
 
@@ -28,8 +32,6 @@ def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: s
     spec = primitives.world
     complete = complete and spec.planner
     if planner is None and complete:
-        from cook2ltl.world.recipe_kitchen import read_kitchen
-
         kit = dict(spec.kit) if spec.kit is not None or spec.kitchen is None else read_kitchen(spec.kitchen).kit
         planner = FastDownward(kit)
     planner = planner if complete else None
@@ -38,11 +40,7 @@ def grounding(primitives: PrimitiveSet, planner: Planner | None = None, scene: s
         names = tuple(names)
         wanted = tuple(dict.fromkeys((*primitives.objects, *names)))
         if spec.kitchen is not None:
-            from cook2ltl.world.recipe_kitchen import kitchen_state
-
             return Start(kitchen_state(spec.kitchen, wanted), {})
-        from cook2ltl.world.thor_kitchens import scene_start
-
         spare = [n for n in primitives.objects if n not in names]
         if objects is not None:  # a running kitchen: its own objects only
             return Start(*scene_start(objects(), wanted, spare=spare))
@@ -57,10 +55,6 @@ def thor_start(names: tuple[str, ...], places: Collection[str], asks: Mapping[st
     an object or a stand-in (an ingredient THOR lacks is a food object, a mixture things go into a bowl, a
     saucepan a pot: `stand_ins`; one that can take the states `asks` names), so the world observes
     what is done to them."""
-    from cook2ltl.thor_types import liquids
-    from cook2ltl.world.stand_ins import best_frame, frame_in
-    from cook2ltl.world.thor_kitchens import scene_objects, scene_start
-
     own = [n for n in names if n not in liquids()]
     frame = frame_in(scene, own, places, asks) if scene else best_frame(own, places, asks)
     state, binding = scene_start(scene_objects(frame.scene), wanted, frame.bound, spare)

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from functools import cache, cached_property
 from pathlib import Path
 
-from cook2ltl import files
+from cook2ltl import files, paths
 from cook2ltl.errors import UserError
 from cook2ltl.paths import shown
 from cook2ltl.world.logic import And, Atom, Condition, Constant, Effect, Equal, Exists, Forall, Not, Or, Schema
@@ -69,6 +69,7 @@ def _domain_text(path: Path) -> str:
 
 def read_with_unified_planning(path: Path, text: str | None = None):
     """unified-planning's own Problem for the domain file (its text, when already read)."""
+    # heavy: unified-planning (~1 s) loads only when a domain is not in the cache yet
     from unified_planning.io import PDDLReader
     from unified_planning.shortcuts import get_environment
 
@@ -138,8 +139,6 @@ def _effect(effect) -> Effect:
 
 
 def _cache_file(text: str) -> Path:
-    from cook2ltl import paths
-
     digest = hashlib.sha256(f"{CACHE_VERSION}|{text}".encode()).hexdigest()[:16]
     return paths.model_cache_dir() / "domains" / f"{digest}.json"
 

@@ -16,6 +16,7 @@ from typing import Protocol
 
 from cook2ltl.domain.actions import WAIT, Call
 from cook2ltl.world.logic import Fact, State, effects_of
+from cook2ltl.world.pddl import read_with_unified_planning
 from cook2ltl.world.world import PROCESS, World
 
 ENGINE = "fast-downward"
@@ -86,6 +87,7 @@ def focus(state: State, goal: Sequence[Fact], kit: frozenset[str] | None) -> Sta
 
 
 def _solve(domain: Path, state: State, goal: tuple[Fact, ...], time_limit: float):
+    # heavy: unified-planning (~1 s) loads with the first search, not with the world model
     from unified_planning.engines import PlanGenerationResultStatus as Status
     from unified_planning.shortcuts import OneshotPlanner
 
@@ -99,7 +101,9 @@ def _solve(domain: Path, state: State, goal: tuple[Fact, ...], time_limit: float
 
 def build_problem(domain: Path, state: State, goal: Sequence[Fact]):
     """unified-planning's Problem: the domain as its reader read it, the state's objects and facts, the goal."""
+    # heavy: unified-planning (~1 s) loads only when a problem is built (a search, --pddl)
     from unified_planning.model import Object
+    from unified_planning.shortcuts import And, Exists, Or, Variable
 
     template = _domain_problem(domain)
     problem = template.clone()
@@ -113,8 +117,6 @@ def build_problem(domain: Path, state: State, goal: Sequence[Fact]):
     for name, *args in goal:
         fact = fluents[name](*(objects[a] for a in args))
         if name == INSIDE:  # directly, or in something there (the milk in a bowl in the fridge)
-            from unified_planning.shortcuts import And, Exists, Or, Variable
-
             middle = Variable("middle", kind)
             x, y = (objects[a] for a in args)
             fact = Or(fact, Exists(And(fluents[name](x, middle), fluents[name](middle, y)), middle))
@@ -126,8 +128,6 @@ def build_problem(domain: Path, state: State, goal: Sequence[Fact]):
 def _domain_problem(domain: Path):
     """The domain for search: an action without effects (THOR's Pass) is left out, as it could only stall
     a search (and Fast Downward's reader refuses an action with no :effect)."""
-    from cook2ltl.world.pddl import read_with_unified_planning
-
     problem = read_with_unified_planning(domain)
     useful = [action for action in problem.actions if action.effects]
     problem.clear_actions()

@@ -29,6 +29,10 @@ from dataclasses import dataclass
 from functools import cache
 
 from cook2ltl.domain.actions import TIMER, Call
+from cook2ltl.simulator.scenes import load_scene, scene_names
+from cook2ltl.simulator.state import enclosing
+from cook2ltl.thor_types import load_type_rules
+from cook2ltl.world.thor_names import types_for
 
 # Kitchen words of recipes and the THOR types that can stand for them, best first.
 STAND_INS: Mapping[str, tuple[str, ...]] = {
@@ -87,8 +91,6 @@ def best_frame(names: Iterable[str], into: Collection[str], asks: Mapping[str, C
     """The kitchen where most of `names` find an object or a stand-in (`into`: the names things go into;
     `asks`: the states a name must be able to take, `cooked`, `sliced`), and the stand-ins bound in it; a name
     of `NO_COUNTERPART` stays missing."""
-    from cook2ltl.simulator.scenes import scene_names
-
     names = [n for n in dict.fromkeys(names) if n not in NO_COUNTERPART]
     frames = [frame_in(scene, names, into, asks) for scene in scene_names()]
     return min(frames, key=lambda f: (len(f.missing), f.hidden, _number(f.scene)))
@@ -96,8 +98,6 @@ def best_frame(names: Iterable[str], into: Collection[str], asks: Mapping[str, C
 
 def frame_in(scene: str, names: list[str], into: Collection[str], asks: Mapping[str, Collection[str]] = {}
              ) -> Casting:
-    from cook2ltl.world.thor_names import types_for
-
     objects = _objects(scene)
     available = {object_type for object_type, _ in objects}
     left = Counter(object_type for object_type, _ in objects)  # objects of each type no name has yet
@@ -145,8 +145,6 @@ def _first_free(objects: tuple[tuple[str, str], ...], wanted: tuple[str, ...], l
 def _objects(scene: str) -> tuple[tuple[str, str], ...]:
     """(type, objectId) of every object of a kitchen at its start, those in plain sight first (a stand-in
     shut in a cabinet would fail a plan that never mentions the cabinet)."""
-    from cook2ltl.simulator.scenes import load_scene
-
     things = sorted(load_scene(scene).objects.values(), key=lambda t: t.object_id in _shut_away(scene))
     return tuple((t.object_type, t.object_id) for t in things)
 
@@ -155,9 +153,6 @@ def _objects(scene: str) -> tuple[tuple[str, str], ...]:
 def _able(scene: str) -> dict[str, set[str]]:
     """Which of the states a recipe asks (sliced, cooked) each object type of the kitchen can take: cooked
     also when its slices can be (bread)."""
-    from cook2ltl.simulator.scenes import load_scene
-    from cook2ltl.thor_types import load_type_rules
-
     slicing = load_type_rules().slicing
     able: dict[str, set[str]] = {}
     for thing in load_scene(scene).objects.values():
@@ -170,17 +165,12 @@ def _able(scene: str) -> dict[str, set[str]]:
 
 @cache
 def _shut_away(scene: str) -> frozenset[str]:
-    from cook2ltl.simulator.scenes import load_scene
-    from cook2ltl.simulator.state import enclosing
-
     state = load_scene(scene)
     return frozenset(object_id for object_id in state.objects if enclosing(state, object_id) is not None)
 
 
 @cache
 def _all_types() -> frozenset[str]:
-    from cook2ltl.simulator.scenes import scene_names
-
     return frozenset(object_type for scene in scene_names() for object_type, _ in _objects(scene))
 
 

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from cook2ltl.domain.actions import TIMER, Call
+from cook2ltl.world.explain import why_not
 from cook2ltl.world.logic import (
     Fact,
     State,
@@ -112,8 +113,6 @@ class World:
         return False
 
     def refusal(self, name: str, call: Call, state: State) -> str:
-        from cook2ltl.world.explain import why_not
-
         return why_not(self.domain.schemas[name], call.args, state)
 
 

@@ -14,6 +14,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Generator, Mapping
 
+from cook2ltl import offline
 from cook2ltl.domain.recipe import Label
 from cook2ltl.parse.gliner_spans import LABELS_FILE
 from cook2ltl.parse.training.brat import read_corpus
@@ -133,9 +134,8 @@ def _config_json(config: TrainConfig) -> dict:
 
 
 def _import_backend(config: TrainConfig):
-    from cook2ltl import offline
-
     offline.enforce()
+    # heavy: torch and GLiNER (seconds) load only to train, after offline.enforce()
     import torch
     from gliner import GLiNERConfig
     from gliner.model import UniEncoderSpanGLiNER

@@ -222,7 +222,7 @@ class LibraryScreen(WorkScreen):
 
     @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
     def change(self, cancel: threading.Event, entry_id: int, change: str, argument: object, query: str) -> None:
-        from cook2ltl.library import Status, reviewer
+        from cook2ltl.library import Status, reviewer  # startup: the app opens before the library (sqlite-utils) loads
 
         library, by = self.library, reviewer()
         if change == "approve":

@@ -16,6 +16,7 @@ from textual.content import Content
 from textual.widgets import Button, Checkbox, DataTable, Footer, Header, Input, Select
 
 from cook2ltl.errors import UserError
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.text_safety import literal, visible
 from cook2ltl.ui.feeds import (
     RecipeRolloutRequest,
@@ -61,6 +62,7 @@ class RolloutScreen(WorkScreen):
         self.recipe_file: Path | None = None  # opened with ctrl+o
 
     def compose(self) -> ComposeResult:
+        # startup: the app opens before the kitchen scenes (~6 ms) load
         from cook2ltl.simulator.scenes import scene_names
 
         yield Header()
@@ -100,7 +102,7 @@ class RolloutScreen(WorkScreen):
         target.value = choice if any(value == choice for _, value in targets) else targets[0][1]
 
     def _targets(self) -> list[tuple[Content, str]]:
-        from cook2ltl.execution.tasks import load_tasks
+        from cook2ltl.execution.tasks import load_tasks  # startup: the app opens before the tasks (pydantic, lark) load
 
         targets = [(f"task {t.id}: {t.instruction}", f"task:{t.id}") for t in load_tasks()]
         translation = self.app.translation
@@ -162,6 +164,7 @@ class RolloutScreen(WorkScreen):
 
     def request(self) -> RolloutRequest | RecipeRolloutRequest:
         """The chosen target as a request; UserError for what cannot run."""
+        # startup: the app opens before the trial and the tasks (pydantic, lark, sqlite-utils) load
         from cook2ltl.assembly.trial import reference_formula
         from cook2ltl.execution.tasks import find_task
 
@@ -185,8 +188,6 @@ class RolloutScreen(WorkScreen):
     def _file_request(self) -> RecipeRolloutRequest:
         """The opened file translated with the recipe primitives and the world model, as `cook2ltl rollout
         RECIPE-FILE` does; UserError for a file that is no recipe."""
-        from cook2ltl.preprocess.recipe_file import read_recipe
-
         text = read_recipe(str(self.recipe_file))
         settings = self.app.translate_settings
         translate = TranslateRequest(text, "recipe", "AR+A", self.app.model_name, repairs=settings.repairs,
@@ -206,6 +207,7 @@ class RolloutScreen(WorkScreen):
         return translation.steps[int(target.removeprefix("recipe:"))].formula
 
     def _typed_formula(self):
+        # startup: the app opens before the LTL parser (lark) loads
         from cook2ltl.ltl.parser import LTLSyntaxError, parse
 
         text = self.query_one("#formula", Input).value.strip()
@@ -265,7 +267,7 @@ class RolloutScreen(WorkScreen):
 
     def on_recipe_action_rolled(self, message: RecipeActionRolled) -> None:
         """The step's sentence before its first action, the action with its effect, then one row a line."""
-        from cook2ltl.world.effects import fact_text
+        from cook2ltl.world.effects import fact_text  # startup: the app opens before the world model (~15 ms) loads
 
         run, step = message.rolled.run, message.rolled.step
         log = self.query_one("#log", DataTable)

@@ -25,6 +25,7 @@ from textual.widgets import (
 
 from cook2ltl.errors import UserError
 from cook2ltl.preprocess.clean import visible_text
+from cook2ltl.preprocess.recipe_file import read_recipe
 from cook2ltl.ui.feeds import TranslateRequest, translation_feed
 from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import ActionReduced, RecipeParsed, StepTranslated, TranslationDone
@@ -173,8 +174,6 @@ class TranslateScreen(WorkScreen):
         self.app.push_screen(PathDialog("Open a recipe file", f"{Path.cwd()}/", "Open"), self._open)
 
     def _open(self, path: Path | None) -> None:
-        from cook2ltl.preprocess.recipe_file import read_recipe
-
         if path is None:
             return
         try:
@@ -195,6 +194,7 @@ class TranslateScreen(WorkScreen):
                                         str(Path.cwd() / f"{stem}.ltl.json"), "Export"), self._export)
 
     def _export(self, path: Path | None) -> None:
+        # startup: the app opens before the report and JSON writers (lark) load
         from cook2ltl.ui.export import write_translation
 
         if path is None:

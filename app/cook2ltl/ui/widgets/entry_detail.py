@@ -44,7 +44,7 @@ class EntryDetail(Static):
 
 
 def _body(entry: LibraryEntry) -> Content:
-    from cook2ltl.library.store import shown_body
+    from cook2ltl.library.store import shown_body  # startup: the app opens before the library (sqlite-utils) loads
 
     title = shown(entry.action).stylize("bold") + shown(f"  #{entry.id} · version {entry.version} · "
                                                         f"{entry.primitives} primitives").stylize("$text-muted")
@@ -52,7 +52,7 @@ def _body(entry: LibraryEntry) -> Content:
 
 
 def _review(entry: LibraryEntry) -> Content:
-    from cook2ltl.library.effect import shown_effect
+    from cook2ltl.library.effect import shown_effect  # startup: the app opens before the library (sqlite-utils) loads
 
     reviewed = f"  by {entry.reviewed_by} at {entry.reviewed_at}" if entry.reviewed_by else ""
     lines = [
@@ -69,7 +69,7 @@ def _review(entry: LibraryEntry) -> Content:
 
 
 def _history(versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> Content:
-    from cook2ltl.library.store import shown_body
+    from cook2ltl.library.store import shown_body  # startup: the app opens before the library (sqlite-utils) loads
 
     lines = [Content("history").stylize("bold")]
     for version in reversed(versions):  # newest first

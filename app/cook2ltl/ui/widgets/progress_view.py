@@ -26,7 +26,7 @@ MET_STYLE = "bold underline $text-success"
 
 def marked(formula: Formula, met: frozenset[Atom]) -> Content:
     """The formula in Unicode with every occurrence of a met atom styled."""
-    from cook2ltl.ltl.printer import to_unicode
+    from cook2ltl.ltl.printer import to_unicode  # startup: the app opens before the LTL printer (lark) loads
 
     text = formula_text(formula)
     if text is None:
@@ -80,6 +80,7 @@ class FormulaProgress(Static):
         self._draw(step.met, step.remaining, step.verdict.value)
 
     def finish(self, trial: Trial) -> None:
+        # startup: the app opens before the trial (pydantic, lark, sqlite-utils) loads
         from cook2ltl.assembly.trial import explain
 
         result = trial.rollout

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 from textual.content import Content
 from textual.widgets import Static
 
+from cook2ltl.domain.recipe import ARGUMENT_LABELS
 from cook2ltl.ui.literal import shown, shown_styled
 
 if TYPE_CHECKING:
@@ -48,8 +49,6 @@ def step_content(step: Step) -> Content:
 
 def frame_content(frame: Frame) -> Content:
     """verb(what, where, …) with each argument in its category's style; * marks one zero anaphora inferred."""
-    from cook2ltl.domain.recipe import ARGUMENT_LABELS
-
     arguments = [shown(argument.span.text + ("*" if argument.inferred else "")).stylize(LABEL_STYLE[label.value])
                  for label in ARGUMENT_LABELS for argument in frame.arguments(label)]
     call = shown(frame.name).stylize(LABEL_STYLE["VERB"]) + Content("(") + Content(", ").join(arguments) + Content(")")
