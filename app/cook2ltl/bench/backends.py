@@ -6,6 +6,8 @@ import time
 from dataclasses import dataclass
 from functools import cache
 
+from cook2ltl.assembly.backends import dependency_parser, span_extractor
+from cook2ltl.domain.settings_file import load_settings
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 
 
@@ -18,9 +20,6 @@ class Parsers:
 
 @cache
 def parsers() -> Parsers:
-    from cook2ltl.assembly.backends import dependency_parser, span_extractor
-    from cook2ltl.domain.settings_file import load_settings
-
     started = time.perf_counter()
     spans, dependencies = span_extractor(load_settings()), dependency_parser()
     spans.extract(["Warm up the oven."])

@@ -13,8 +13,19 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+from cook2ltl.assembly.backends import load_model
+from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
+from cook2ltl.bench.backends import parsers
 from cook2ltl.bench.ltl import measure_ltl
 from cook2ltl.bench.results import write
+from cook2ltl.bench.table1 import eval_recipes
+from cook2ltl.domain.actions import Action
+from cook2ltl.execution.launcher import start_embedded
+from cook2ltl.execution.tasks import find_task
+from cook2ltl.preprocess import split_sentences
+from cook2ltl.reduce.action import parameter
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 
 # Actions reduced for the language model's timings: the paper's four AI2-THOR tasks (primitive set, verb, what).
 REDUCTIONS = (("ai2thor", "microwave", "the potato"), ("ai2thor", "chop", "the tomato"),
@@ -41,7 +52,6 @@ asyncio.run(first_screen())
 
 def span_model(sentences: list[str]) -> dict:
     """Milliseconds per sentence, all in one batch as `parse` gives a recipe's sentences."""
-    from cook2ltl.bench.backends import parsers
 
     backends = parsers()
     started = time.perf_counter()
@@ -53,11 +63,6 @@ def span_model(sentences: list[str]) -> dict:
 def language_model(name: str, count: int) -> dict:
     """Seconds per reduction and tokens per second over the first `count` actions of REDUCTIONS (the first
     one apart when there are more: it also evaluates the static prompt prefix, or restores it from disk)."""
-    from cook2ltl.assembly.backends import load_model
-    from cook2ltl.domain.actions import Action
-    from cook2ltl.reduce.action import parameter
-    from cook2ltl.reduce.primitives import load_primitives
-    from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 
     model = load_model(name)
     started = time.perf_counter()
@@ -82,9 +87,6 @@ def language_model(name: str, count: int) -> dict:
 
 def kitchen_actions(task_ids: tuple[str, ...]) -> dict:
     """Seconds per executed action of the tasks' hand-written plans in the embedded kitchen (no model)."""
-    from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
-    from cook2ltl.execution.launcher import start_embedded
-    from cook2ltl.execution.tasks import find_task
 
     started = time.perf_counter()
     kitchen = start_embedded("FloorPlan1")
@@ -117,9 +119,6 @@ def app_cold_start(repeats: int) -> dict:
 
 
 def run_micro(model: str, smoke: bool, out: Path, echo: Callable[[str], None]) -> dict:
-    from cook2ltl.bench.table1 import eval_recipes
-    from cook2ltl.preprocess import split_sentences
-
     sentences = [s.text for _, text in eval_recipes(1 if smoke else None) for s in split_sentences(text)]
     steps: list[tuple[str, Callable[[], dict]]] = [
         ("span_model", lambda: span_model(sentences)),

@@ -18,6 +18,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from cook2ltl import paths
+from cook2ltl.assembly.backends import SPAN_MODEL
+from cook2ltl.assembly.manifest import load_manifest
+from cook2ltl.bench.backends import parsers
 from cook2ltl.bench.results import write
 from cook2ltl.domain.recipe import Label, Span
 from cook2ltl.parse.training.brat import read_corpus
@@ -55,6 +58,7 @@ def split(data_dir: Path) -> tuple[list[SentenceExample], list[SentenceExample]]
 
 def train_spacy(training: list[SentenceExample], recipe: SpacyRecipe, progress: Callable[[str], None]):
     """A blank English NER trained on the sentences; spans spaCy's tokens cannot hold, or that overlap, are left out."""
+    # heavy: spaCy (and its training) loads only when the baseline is trained
     import spacy
     from spacy.training import Example
     from spacy.util import filter_spans, fix_random_seed, minibatch
@@ -85,7 +89,7 @@ def train_spacy(training: list[SentenceExample], recipe: SpacyRecipe, progress: 
 def spacy_baseline(training: list[SentenceExample], recipe: SpacyRecipe, cache: Path | None,
                    progress: Callable[[str], None]) -> tuple[SpacySpans, dict]:
     """The trained baseline from the cache, or trained now (and cached when a cache folder is given)."""
-    import spacy
+    import spacy  # heavy: loads only when the benchmark runs, not when `bench` lists its choices
 
     key = hashlib.sha256(json.dumps([spacy.__version__, vars(recipe), [(e.text, [(s.label.value, s.start, s.end)
                                      for s in e.spans]) for e in training]]).encode()).hexdigest()[:12]
@@ -123,10 +127,6 @@ def report_json(report: Report, milliseconds: float) -> dict:
 
 
 def run_ner(smoke: bool, out: Path, echo: Callable[[str], None]) -> dict:
-    from cook2ltl.assembly.backends import SPAN_MODEL
-    from cook2ltl.assembly.manifest import load_manifest
-    from cook2ltl.bench.backends import parsers
-
     training, held_out = split(paths.models_dir() / load_manifest()[SPAN_MODEL].data)
     recipe = SpacyRecipe(epochs=1) if smoke else SpacyRecipe()
     if smoke:  # the shape of the work, in seconds: a few sentences each way, nothing cached

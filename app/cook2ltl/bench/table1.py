@@ -33,15 +33,23 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from cook2ltl import paths
+from cook2ltl.assembly.backends import load_model
 from cook2ltl.assembly.translators import TranslateOptions, build_translator
+from cook2ltl.bench.backends import parsers
 from cook2ltl.bench.refusals import refusals, refusals_note
 from cook2ltl.bench.results import pm, write
 from cook2ltl.domain.actions import Source
 from cook2ltl.domain.recipe import ParsedRecipe
 from cook2ltl.errors import UserError
+from cook2ltl.execution.kitchen_check import KitchenValidator
+from cook2ltl.formulas.formula import direct_calls
+from cook2ltl.library import Library
+from cook2ltl.parse import parse_recipe
 from cook2ltl.pipeline.rates import rates
 from cook2ltl.pipeline.records import Translation, TranslationFinished, Variant
 from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.reduce.action import actions_of
+from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.validation import PlanValidator
 
 RECIPES_FILE = "eval_recipes_50.csv"
@@ -91,9 +99,6 @@ def eval_recipes(limit: int | None = None) -> list[tuple[str, str]]:
 
 
 def parse_all(recipes: list[tuple[str, str]]) -> Stage:
-    from cook2ltl.bench.backends import parsers
-    from cook2ltl.parse import parse_recipe
-
     backends = parsers()
     started = time.perf_counter()
     parsed = tuple(parse_recipe(text, backends.spans, backends.dependencies) for _, text in recipes)
@@ -103,8 +108,6 @@ def parse_all(recipes: list[tuple[str, str]]) -> Stage:
 def library_bound(stage: Stage, primitives) -> dict:
     """What bounds AR+𝔸's calls: the library is keyed by verb and signature, so every distinct key among the
     actions that are not passed through as primitives costs at least one call, however good the model."""
-    from cook2ltl.formulas.formula import direct_calls
-    from cook2ltl.reduce.action import actions_of
 
     actions = [a for recipe in stage.recipes for step in recipe.steps for frame in step.frames
                for a in actions_of(frame)]
@@ -189,8 +192,6 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
                echo: Callable[[str], None], seed: int = FIRST_SEED, primitive_set: str = "recipe") -> dict:
     """Table I with the real models, runs seeded `seed`, `seed` + 1, …; the record and table are rewritten
     after each recipe."""
-    from cook2ltl.assembly.backends import load_model
-    from cook2ltl.reduce.primitives import load_primitives
 
     check_variants(variants)
     recipes = eval_recipes(limit)
@@ -207,7 +208,6 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
     def report(rows: list[dict]) -> None:
         write(out, "table1", record | {"runs": rows}, table1_markdown(rows, len(recipes), record["library_bound"]))
 
-    from cook2ltl.execution.kitchen_check import KitchenValidator
 
     with KitchenValidator(primitives) as validator:
         record["runs"] = measure(stage, model, primitives, validator, runs, variants, seed, report, echo)
@@ -227,7 +227,6 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
             seed: int, report: Callable[[list[dict]], None], echo: Callable[[str], None]) -> list[dict]:
     """Each run (its own seed, recipe order and empty libraries) over the variants in VARIANTS order; `report`
     gets every row so far after each recipe, the running one last."""
-    from cook2ltl.library import Library
 
     rows: list[dict] = []
     for index in range(runs):

@@ -18,9 +18,19 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+from cook2ltl.assembly.backends import load_model
+from cook2ltl.assembly.planning import PRIMITIVES, TaskPlanner
+from cook2ltl.assembly.translators import TranslateOptions, build_translator
+from cook2ltl.assembly.trial import TrialDone, explain, run_trial
+from cook2ltl.bench.backends import parsers
 from cook2ltl.bench.results import pm, write
 from cook2ltl.errors import UserError
+from cook2ltl.execution.kitchen_check import KitchenValidator
+from cook2ltl.execution.launcher import start_embedded
+from cook2ltl.execution.tasks import PARAPHRASES, load_tasks, set_up
+from cook2ltl.library import Library
 from cook2ltl.pipeline.records import Variant
+from cook2ltl.reduce.primitives import load_primitives
 
 # Table II of the paper (gpt-3.5-turbo, 5 sets of 10 runs): successes of 10 and seconds, AR then AR+𝔸.
 PAPER = {
@@ -40,8 +50,6 @@ COLUMNS = {"AR": (Variant.AR, None, False), "AR+A": (Variant.AR_LIBRARY, None, F
 
 
 def choose_tasks(which: str):
-    from cook2ltl.execution.tasks import PARAPHRASES, load_tasks
-
     def set_of(task) -> str:
         if task.source.startswith("paper"):
             return "paper"
@@ -56,8 +64,6 @@ def choose_tasks(which: str):
 
 def run_task(kitchen, planner, task) -> dict:
     """Plan the task's instruction, roll the plan out, check the goal."""
-    from cook2ltl.assembly.trial import TrialDone, explain, run_trial
-    from cook2ltl.execution.tasks import set_up
 
     kitchen.reset(task.scene)
     set_up(kitchen, task)  # the world model starts from the kitchen as the task leaves it (a dirty mug)
@@ -80,14 +86,6 @@ def rollout_runs(model: str, variant: Variant, runs: int, tasks, echo: Callable[
                  repairs: int | None = None, ground: bool = False) -> dict:
     """Every task `runs` consecutive times with one planner and one library; each run's outcome. With
     `repairs`, new plans are checked in the kitchen and repaired that many times at most."""
-    from cook2ltl.assembly.backends import load_model
-    from cook2ltl.assembly.planning import PRIMITIVES, TaskPlanner
-    from cook2ltl.assembly.translators import TranslateOptions, build_translator
-    from cook2ltl.bench.backends import parsers
-    from cook2ltl.execution.kitchen_check import KitchenValidator
-    from cook2ltl.execution.launcher import start_embedded
-    from cook2ltl.library import Library
-    from cook2ltl.reduce.primitives import load_primitives
 
     results: dict[str, list[dict]] = {}
     started = time.perf_counter()

@@ -9,6 +9,8 @@ from typing import Optional
 
 import typer
 
+from cook2ltl import paths
+from cook2ltl.assembly.backends import DEFAULT_MODEL
 from cook2ltl.errors import UserError
 from cook2ltl.text_safety import terminal
 
@@ -53,10 +55,6 @@ def bench_command(
     finished: bool = typer.Option(False, help="With --combine: leave out runs stopped before the last recipe."),
 ) -> None:
     """Measure and write bench/results/<name>.json and .md (a benchmark, not a test: it takes long)."""
-    # loaded when the command runs, not when the CLI lists it or shows its --help
-    from cook2ltl import paths
-    from cook2ltl.assembly.backends import DEFAULT_MODEL
-
     if (combine or finished) and (which != Benchmark.TABLE1 or not combine):
         raise UserError("--combine (and --finished) make Table I from results already written.",
                         "cook2ltl bench table1 --combine A/table1.json --combine B/table1.json [--finished]")
