@@ -7,6 +7,7 @@ run in the embedded kitchen before it is stored, an edited intended effect is ch
 
 from __future__ import annotations
 
+from contextlib import ExitStack
 from pathlib import Path
 from typing import Optional
 
@@ -229,16 +230,15 @@ def _primitive_set(choice: str, name: str):
 
 def _kitchen_check(entry, body, primitive_set, verbs):
     # startup: `cook2ltl --help` imports this module; pydantic and the kitchen load when the command runs
-    from cook2ltl.execution.kitchen_check import KitchenValidator, unsupported
-    from cook2ltl.library.recheck import Recheck, recheck
+    from cook2ltl.assembly.edits import edited_body_check
+    from cook2ltl.execution.kitchen_check import KitchenValidator
 
-    missing = unsupported(primitive_set)
-    if missing:
-        problem = f"not checked in the kitchen: it has no action for {', '.join(missing)}"
-        return Recheck(CheckStatus.UNCHECKED, (problem,))
-    with (terminal(stderr=True).status("running the body in the kitchen …"),
-          KitchenValidator(primitive_set) as kitchen):
-        return recheck(entry, body, primitive_set, verbs, kitchen)
+    with ExitStack() as closing:
+        def kitchen():
+            closing.enter_context(terminal(stderr=True).status("running the body in the kitchen …"))
+            return closing.enter_context(KitchenValidator(primitive_set))
+
+        return edited_body_check(entry, body, primitive_set, verbs, kitchen)
 
 
 @library_app.command("history")

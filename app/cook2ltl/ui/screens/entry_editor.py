@@ -127,16 +127,10 @@ class EntryEditor(ModalScreen[Edited | None]):
     @work(thread=True, exclusive=True, exit_on_error=False, group="editor")
     def kitchen_check(self, body: str) -> None:
         # startup: the app opens before the kitchen check and the library (sqlite-utils) load
-        from cook2ltl.execution.kitchen_check import unsupported
-        from cook2ltl.library.recheck import Recheck, recheck
+        from cook2ltl.assembly.edits import edited_body_check
 
-        missing = unsupported(self.primitives)
-        if missing:
-            problem = f"not checked in the kitchen: it has no action for {', '.join(missing)}"
-            check = Recheck(CheckStatus.UNCHECKED, (problem,))
-        else:
-            validator = self.app.services.validator(self.primitives)
-            check = recheck(self.entry, body, self.primitives, self.verbs, validator)
+        check = edited_body_check(self.entry, body, self.primitives, self.verbs,
+                                  lambda: self.app.services.validator(self.primitives))
         self.post_message(KitchenChecked(body, check))
 
     def on_kitchen_checked(self, message: KitchenChecked) -> None:
