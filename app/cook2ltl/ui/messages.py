@@ -1,7 +1,8 @@
 """Typed messages that thread workers post to their screen: progress, results, and the end of a run.
 
-Workers never touch widgets; they post these (`post_message` is thread-safe) and the screen draws them. They
-stay on the screen (no bubbling) except `TranslationDone`, which the app keeps for the Rollout screen.
+Workers never touch widgets; they post these dataclasses (`post_message` is thread-safe) and the screen draws
+them. They stay on the screen (no bubbling) except `TranslationDone`, which the app keeps for the Rollout screen;
+a newer `WorkProgress` replaces one still waiting in the queue.
 """
 
 from __future__ import annotations
@@ -34,20 +35,23 @@ class ScreenMessage(Message):
     bubble = False
 
 
+@dataclass
 class WorkProgress(ScreenMessage):
     """The latest word on a running job; each replaces the one before (done/total None: no bar)."""
 
-    def __init__(self, text: str, done: int | None = None, total: int | None = None) -> None:
-        super().__init__()
-        self.text, self.done, self.total = text, done, total
+    text: str
+    done: int | None = None
+    total: int | None = None
+
+    def can_replace(self, message: Message) -> bool:
+        return isinstance(message, WorkProgress)  # a newer word supersedes one the screen has not drawn yet
 
 
+@dataclass
 class WorkNotice(ScreenMessage):
     """Something the user should know about a job that goes on (a notification, not the status line)."""
 
-    def __init__(self, text: str) -> None:
-        super().__init__()
-        self.text = text
+    text: str
 
 
 class WorkStopped(ScreenMessage):
@@ -56,64 +60,64 @@ class WorkStopped(ScreenMessage):
 
 # --- translation -----------------------------------------------------------------------------------------
 
+@dataclass
 class RecipeParsed(ScreenMessage):
-    def __init__(self, parsed: ParsedRecipe) -> None:
-        super().__init__()
-        self.parsed = parsed
+    parsed: ParsedRecipe
 
 
+@dataclass
 class ActionReduced(ScreenMessage):
-    def __init__(self, event: ActionDone, total: int) -> None:
-        super().__init__()
-        self.event, self.total = event, total
+    event: ActionDone
+    total: int
 
 
+@dataclass
 class StepTranslated(ScreenMessage):
-    def __init__(self, result: StepResult) -> None:
-        super().__init__()
-        self.result = result
+    result: StepResult
 
 
+@dataclass
 class TranslationDone(Message):
     """Bubbles to the app, which keeps the translation for the Rollout screen, with the primitive set it was
     made with (recipe, ai2thor or a file: what its world model is read from)."""
 
-    def __init__(self, translation: Translation, primitives: str = "") -> None:
-        super().__init__()
-        self.translation, self.primitives = translation, primitives
+    translation: Translation
+    primitives: str = ""
 
 
 # --- library ---------------------------------------------------------------------------------------------
 
+@dataclass
 class LibraryLoaded(ScreenMessage):
     """The entries a search found (None when the query could not be read: `problem` says why)."""
 
-    def __init__(self, entries: tuple[LibraryEntry, ...] | None, select: int | None = None,
-                 problem: str = "") -> None:
-        super().__init__()
-        self.entries, self.select, self.problem = entries, select, problem
+    entries: tuple[LibraryEntry, ...] | None
+    select: int | None = None
+    problem: str = ""
 
 
+@dataclass
 class EntryHistory(ScreenMessage):
     """Every body an entry had, and every approval and rejection of them."""
 
-    def __init__(self, entry_id: int, versions: tuple[Version, ...], reviews: tuple[Review, ...]) -> None:
-        super().__init__()
-        self.entry_id, self.versions, self.reviews = entry_id, versions, reviews
+    entry_id: int
+    versions: tuple[Version, ...]
+    reviews: tuple[Review, ...]
 
 
+@dataclass
 class EditorReady(ScreenMessage):
     """What the entry editor checks a body against: the primitive set (None if it cannot be read) and verbs."""
 
-    def __init__(self, primitives: PrimitiveSet | None, verbs: list[LibraryVerb], problem: str) -> None:
-        super().__init__()
-        self.primitives, self.verbs, self.problem = primitives, verbs, problem
+    primitives: PrimitiveSet | None
+    verbs: list[LibraryVerb]
+    problem: str
 
 
+@dataclass
 class KitchenChecked(ScreenMessage):
-    def __init__(self, body: str, check: Recheck) -> None:
-        super().__init__()
-        self.body, self.check = body, check
+    body: str
+    check: Recheck
 
 
 # --- rollout ---------------------------------------------------------------------------------------------
@@ -127,54 +131,51 @@ class ObjectState:
     state: str
 
 
+@dataclass
 class RolloutBegan(ScreenMessage):
-    def __init__(self, formula: Formula, scene: str, task: Task | None, plan: Plan | None,
-                 unobservable: tuple[Atom, ...]) -> None:
-        super().__init__()
-        self.formula, self.scene, self.task, self.plan, self.unobservable = formula, scene, task, plan, unobservable
+    formula: Formula
+    scene: str
+    task: Task | None
+    plan: Plan | None
+    unobservable: tuple[Atom, ...]
 
 
+@dataclass
 class RolloutStepped(ScreenMessage):
-    def __init__(self, step: TraceStep, objects: tuple[ObjectState, ...]) -> None:
-        super().__init__()
-        self.step, self.objects = step, objects
+    step: TraceStep
+    objects: tuple[ObjectState, ...]
 
 
+@dataclass
 class RolloutRefused(ScreenMessage):
-    def __init__(self, attempt: Attempt) -> None:
-        super().__init__()
-        self.attempt = attempt
+    attempt: Attempt
 
 
+@dataclass
 class RolloutDone(ScreenMessage):
-    def __init__(self, trial: Trial) -> None:
-        super().__init__()
-        self.trial = trial
+    trial: Trial
 
 
 # --- a recipe rolled out in the world model -------------------------------------------------------------
 
+@dataclass
 class RecipeRolloutBegan(ScreenMessage):
-    def __init__(self, began: Began, title: str) -> None:
-        super().__init__()
-        self.began, self.title = began, title
+    began: Began
+    title: str
 
 
+@dataclass
 class RecipeActionRolled(ScreenMessage):
     """An action's plan lines applied (or refused) where the recipe has got to."""
 
-    def __init__(self, rolled: ActionRolled) -> None:
-        super().__init__()
-        self.rolled = rolled
+    rolled: ActionRolled
 
 
+@dataclass
 class RecipeStepRolled(ScreenMessage):
-    def __init__(self, run: StepRun) -> None:
-        super().__init__()
-        self.run = run
+    run: StepRun
 
 
+@dataclass
 class RecipeRolloutDone(ScreenMessage):
-    def __init__(self, rollout: RecipeRollout) -> None:
-        super().__init__()
-        self.rollout = rollout
+    rollout: RecipeRollout

@@ -1,9 +1,8 @@
 """What every working screen shares: one thread worker at a time, its progress in the status line, ctrl+g to
-cancel it (a `threading.Event` the core checks between steps), and failures shown as a dialog."""
+cancel it (the worker hands its own `cancelled_event` to the core, which checks it between steps), and failures
+shown as a dialog."""
 
 from __future__ import annotations
-
-import threading
 
 from textual.binding import Binding
 from textual.reactive import reactive
@@ -21,21 +20,22 @@ class WorkScreen(Screen):
 
     busy: reactive[bool] = reactive(False, bindings=True)
 
-    def __init__(self) -> None:
-        super().__init__()
-        self.cancel_event = threading.Event()
-
-    def begin(self, what: str) -> threading.Event:
-        """Mark the screen busy and give the new job its own cancel event."""
-        self.cancel_event = threading.Event()
+    def begin(self, what: str) -> None:
+        """Mark the screen busy before its job's worker starts."""
         self.busy = True
         self.query_one(WorkStatus).show(what)
-        return self.cancel_event
 
     def action_cancel(self) -> None:
         if self.busy:
-            self.cancel_event.set()
+            self._stop_jobs()
             self.query_one(WorkStatus).show("stopping after the current step …")
+
+    def _stop_jobs(self) -> None:
+        # The worker's own event, not Worker.cancel(): the thread ends after its current step as at the end of a
+        # run, so the screen is not free for the next job while the thread still holds the models.
+        for worker in self.workers:
+            if worker.node is self and worker.group == self.JOB and not worker.is_finished:
+                worker.cancelled_event.set()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         if action == "cancel":
@@ -67,4 +67,4 @@ class WorkScreen(Screen):
         """After any job, whatever its end: re-enable what `busy` disabled."""
 
     def on_unmount(self) -> None:
-        self.cancel_event.set()  # a thread still running stops at its next check
+        self._stop_jobs()  # a thread still running stops at its next check

@@ -7,7 +7,6 @@ thread), and ends by posting the entries as they now are.
 
 from __future__ import annotations
 
-import threading
 from typing import TYPE_CHECKING
 
 from textual import work
@@ -218,10 +217,11 @@ class LibraryScreen(WorkScreen):
 
     def _write(self, what: str, entry_id: int, change: str, argument: object = None) -> None:
         query = self.query_one("#search", Input).value
-        self.change(self.begin(f"{what} …"), entry_id, change, argument, query)
+        self.begin(f"{what} …")
+        self.change(entry_id, change, argument, query)
 
     @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
-    def change(self, cancel: threading.Event, entry_id: int, change: str, argument: object, query: str) -> None:
+    def change(self, entry_id: int, change: str, argument: object, query: str) -> None:
         from cook2ltl.library import Status, reviewer  # startup: the app opens before the library (sqlite-utils) loads
 
         library, by = self.library, reviewer()

@@ -5,7 +5,6 @@ opened here and translated) also runs in the world model, step after step in one
 
 from __future__ import annotations
 
-import threading
 from pathlib import Path
 
 from textual import work
@@ -14,6 +13,7 @@ from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.content import Content
 from textual.widgets import Button, Checkbox, DataTable, Footer, Header, Input, Select
+from textual.worker import get_current_worker
 
 from cook2ltl.errors import UserError
 from cook2ltl.preprocess.recipe_file import read_recipe
@@ -144,10 +144,11 @@ class RolloutScreen(WorkScreen):
             table.clear()
         self.query_one(FormulaProgress).update("")
         self.query_one("#run-rollout", Button).disabled = True
+        self.begin("starting …")
         if isinstance(request, RecipeRolloutRequest):
-            self.roll_out_recipe(request, self.begin("starting …"))
+            self.roll_out_recipe(request)
         else:
-            self.roll_out(request, self.begin("starting …"))
+            self.roll_out(request)
 
     def action_open(self) -> None:
         if not self.busy:
@@ -219,13 +220,13 @@ class RolloutScreen(WorkScreen):
             raise UserError(f"Not a formula: {error}", "e.g. F(pick_up(apple) & F put(apple, fridge)).") from None
 
     @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
-    def roll_out(self, request: RolloutRequest, cancel: threading.Event) -> None:
-        for message in rollout_feed(self.app.services, request, cancel):
+    def roll_out(self, request: RolloutRequest) -> None:
+        for message in rollout_feed(self.app.services, request, get_current_worker().cancelled_event):
             self.post_message(message)
 
     @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
-    def roll_out_recipe(self, request: RecipeRolloutRequest, cancel: threading.Event) -> None:
-        for message in recipe_rollout_feed(self.app.services, request, cancel):
+    def roll_out_recipe(self, request: RecipeRolloutRequest) -> None:
+        for message in recipe_rollout_feed(self.app.services, request, get_current_worker().cancelled_event):
             self.post_message(message)
 
     def work_ended(self) -> None:

@@ -3,7 +3,6 @@ reductions as they arrive, and each step's formula, which can be exported as JSO
 
 from __future__ import annotations
 
-import threading
 from pathlib import Path
 
 from textual import work
@@ -22,6 +21,7 @@ from textual.widgets import (
     TabPane,
     TextArea,
 )
+from textual.worker import get_current_worker
 
 from cook2ltl.errors import UserError
 from cook2ltl.preprocess.clean import visible_text
@@ -131,11 +131,12 @@ class TranslateScreen(WorkScreen):
         self.query_one("#reduction-detail", Static).update("")
         self.query_one(FormulaList).clear()
         self.query_one("#run", Button).disabled = True
-        self.translate(request, self.begin("starting …"))
+        self.begin("starting …")
+        self.translate(request)
 
     @work(thread=True, exclusive=True, exit_on_error=False, group=JOB)
-    def translate(self, request: TranslateRequest, cancel: threading.Event) -> None:
-        for message in translation_feed(self.app.services, request, cancel):
+    def translate(self, request: TranslateRequest) -> None:
+        for message in translation_feed(self.app.services, request, get_current_worker().cancelled_event):
             self.post_message(message)
 
     def work_ended(self) -> None:
