@@ -31,26 +31,8 @@ from dataclasses import dataclass
 from enum import Enum
 
 from cook2ltl.ltl.ast import (
-    FALSE,
-    TRUE,
-    Always,
-    And,
-    Atom,
-    Constant,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
-    holds_at_end,
-    negate,
+    FALSE, TRUE, Always, And, Atom, Constant, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release,
+    StrongRelease, Until, WeakNext, WeakUntil, holds_at_end, negate,
 )
 from cook2ltl.ltl.limits import WorkLimit
 from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, equiv_, or_
@@ -181,23 +163,22 @@ def _rule(f: Formula) -> Generator[Formula, Formula, Formula]:
 def _all_of(operands: tuple[Formula, ...]) -> Generator[Formula, Formula, Formula]:
     # Operands are sorted atoms first, so a sequence like a ∧ ◇(…) stops at a
     # failed atom without walking the rest of the recipe.
-    done = []
-    for a in operands:
-        p = yield a
-        if p is FALSE:
-            return FALSE
-        done.append(p)
-    return and_(*done)
+    return (yield from _each(operands, FALSE, and_))
 
 
 def _any_of(operands: tuple[Formula, ...]) -> Generator[Formula, Formula, Formula]:
+    return (yield from _each(operands, TRUE, or_))
+
+
+def _each(operands: tuple[Formula, ...], absorbing: Formula, combine) -> Generator[Formula, Formula, Formula]:
+    """Each operand progressed in turn (sent back by the caller), stopping at the first that is ``absorbing``."""
     done = []
     for a in operands:
         p = yield a
-        if p is TRUE:
-            return TRUE
+        if p is absorbing:
+            return absorbing
         done.append(p)
-    return or_(*done)
+    return combine(*done)
 
 
 def progress_trace(formula: Formula, trace: Iterable[Iterable[Atom]]) -> Formula:

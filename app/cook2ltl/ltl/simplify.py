@@ -18,26 +18,8 @@ from __future__ import annotations
 from functools import lru_cache
 
 from cook2ltl.ltl.ast import (
-    FALSE,
-    TRUE,
-    Always,
-    And,
-    Atom,
-    Constant,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
-    holds_at_end,
-    postorder,
+    FALSE, TRUE, Always, And, Atom, Constant, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release,
+    StrongRelease, Until, WeakNext, WeakUntil, holds_at_end, postorder,
 )
 from cook2ltl.ltl.limits import WorkLimit, charge
 
@@ -121,40 +103,31 @@ _WEAKENINGS = {
 
 def and_(*operands: Formula) -> Formula:
     """Conjunction without contradictions and without operands a stronger one settles."""
-    f = And(*operands)
-    if not isinstance(f, And):
-        return f
-    present = set(f.args)
-    if any(isinstance(a, Not) and a.arg in present for a in f.args):
-        return FALSE
-    if len(f.args) > SUBSUMPTION_OPERANDS:
-        return f
-    kept: list[Formula] = []
-    for a in f.args:
-        if any(implies(k, a) for k in kept):
-            continue
-        kept = [k for k in kept if not implies(a, k)]
-        kept.append(a)
-    return And(*kept)
+    return _without_settled(And(*operands), And, FALSE, implies)
 
 
 def or_(*operands: Formula) -> Formula:
     """Disjunction without operands that a weaker one already covers; ``x ∨ ¬x`` is ``⊤``."""
-    f = Or(*operands)
-    if not isinstance(f, Or):
+    return _without_settled(Or(*operands), Or, TRUE, lambda weaker, stronger: implies(stronger, weaker))
+
+
+def _without_settled(f: Formula, op: type, absorbing: Formula, settles) -> Formula:
+    """``f`` (built by ``op``, ∧ or ∨) as ``absorbing`` when it holds an operand and its negation, else without
+    the operands another one settles: ``settles(k, a)`` says that ``k`` makes ``a`` redundant."""
+    if not isinstance(f, op):
         return f
     present = set(f.args)
     if any(isinstance(a, Not) and a.arg in present for a in f.args):
-        return TRUE
+        return absorbing
     if len(f.args) > SUBSUMPTION_OPERANDS:
         return f
     kept: list[Formula] = []
     for a in f.args:
-        if any(implies(a, k) for k in kept):
+        if any(settles(k, a) for k in kept):
             continue
-        kept = [k for k in kept if not implies(k, a)]
+        kept = [k for k in kept if not settles(a, k)]
         kept.append(a)
-    return Or(*kept)
+    return op(*kept)
 
 
 def equiv_(a: Formula, b: Formula) -> Formula:

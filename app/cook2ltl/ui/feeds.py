@@ -17,22 +17,9 @@ from textual.message import Message
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.reduce.llm import GenerationCancelled
 from cook2ltl.ui.messages import (
-    ActionReduced,
-    ObjectState,
-    RecipeActionRolled,
-    RecipeParsed,
-    RecipeRolloutBegan,
-    RecipeRolloutDone,
-    RecipeStepRolled,
-    RolloutBegan,
-    RolloutDone,
-    RolloutRefused,
-    RolloutStepped,
-    StepTranslated,
-    TranslationDone,
-    WorkNotice,
-    WorkProgress,
-    WorkStopped,
+    ActionReduced, ObjectState, RecipeActionRolled, RecipeParsed, RecipeRolloutBegan, RecipeRolloutDone,
+    RecipeStepRolled, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped, StepTranslated, TranslationDone,
+    WorkNotice, WorkProgress, WorkStopped,
 )
 from cook2ltl.ui.services import Services
 
@@ -88,14 +75,7 @@ def translation_feed(services: Services, request: TranslateRequest, cancel: thre
 def _translating(services: Services, request: TranslateRequest, cancel: threading.Event) -> Iterator[Message]:
     # startup: the app opens before the pipeline loads; the first run in a worker loads it
     from cook2ltl.assembly.translators import TranslateOptions, build_translator
-    from cook2ltl.pipeline.records import (
-        ActionDone,
-        Parsed,
-        StepDone,
-        TranslationFinished,
-        TranslationStarted,
-        Variant,
-    )
+    from cook2ltl.pipeline.records import ActionDone, Parsed, StepDone, TranslationFinished, TranslationStarted, Variant
     from cook2ltl.pipeline.translator import run
     from cook2ltl.reduce.primitives import load_primitives
 

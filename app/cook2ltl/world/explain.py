@@ -6,19 +6,7 @@ up"; `put(egg, pot)`: "not holding egg". Predicates without a phrase are shown a
 
 from __future__ import annotations
 
-from cook2ltl.world.logic import (
-    And,
-    Atom,
-    Condition,
-    Env,
-    Exists,
-    Not,
-    Or,
-    Schema,
-    State,
-    ground,
-    holds,
-)
+from cook2ltl.world.logic import And, Atom, Condition, Env, Exists, Not, Or, Schema, State, ground, holds
 
 # predicate → (phrase when it is needed but false, phrase when it must be false but holds)
 PHRASES = {
