@@ -29,10 +29,9 @@ from dataclasses import dataclass
 from functools import cache
 
 from cook2ltl.domain.actions import TIMER, Call
-from cook2ltl.simulator.scenes import load_scene, scene_names
-from cook2ltl.simulator.state import enclosing
 from cook2ltl.thor_types import load_type_rules
-from cook2ltl.world.thor_names import types_for
+from cook2ltl.world.thor_kitchens import scene_names, scene_objects
+from cook2ltl.world.thor_names import shut_away, types_for
 
 # Kitchen words of recipes and the THOR types that can stand for them, best first.
 STAND_INS: Mapping[str, tuple[str, ...]] = {
@@ -145,8 +144,8 @@ def _first_free(objects: tuple[tuple[str, str], ...], wanted: tuple[str, ...], l
 def _objects(scene: str) -> tuple[tuple[str, str], ...]:
     """(type, objectId) of every object of a kitchen at its start, those in plain sight first (a stand-in
     shut in a cabinet would fail a plan that never mentions the cabinet)."""
-    things = sorted(load_scene(scene).objects.values(), key=lambda t: t.object_id in _shut_away(scene))
-    return tuple((t.object_type, t.object_id) for t in things)
+    things = sorted(scene_objects(scene), key=lambda o: o["objectId"] in _shut_away(scene))
+    return tuple((o["objectType"], o["objectId"]) for o in things)
 
 
 @cache
@@ -155,18 +154,17 @@ def _able(scene: str) -> dict[str, set[str]]:
     also when its slices can be (bread)."""
     slicing = load_type_rules().slicing
     able: dict[str, set[str]] = {}
-    for thing in load_scene(scene).objects.values():
-        rule = slicing.get(thing.object_type)
-        states = {"sliced"} if "sliceable" in thing.abilities else set()
-        states |= {"cooked"} if "cookable" in thing.abilities or (rule and rule.cookable) else set()
-        able.setdefault(thing.object_type, set()).update(states)
+    for thing in scene_objects(scene):
+        rule = slicing.get(thing["objectType"])
+        states = {"sliced"} if thing.get("sliceable") else set()
+        states |= {"cooked"} if thing.get("cookable") or (rule and rule.cookable) else set()
+        able.setdefault(thing["objectType"], set()).update(states)
     return able
 
 
 @cache
 def _shut_away(scene: str) -> frozenset[str]:
-    state = load_scene(scene)
-    return frozenset(object_id for object_id in state.objects if enclosing(state, object_id) is not None)
+    return frozenset(shut_away(scene_objects(scene)))
 
 
 @cache
