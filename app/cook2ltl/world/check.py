@@ -8,9 +8,9 @@ whole plan. Lines the effect does not need are then dropped (`pruned`). Every li
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import NamedTuple, Protocol
 
 from cook2ltl.domain.actions import Call
 from cook2ltl.world.effects import fact_text
@@ -54,13 +54,21 @@ class Start(NamedTuple):
     scene: str = ""  # the THOR scene the binding is in; "" for a kitchen file or a running kitchen
 
 
+class Starter(Protocol):
+    """How a run starts in a world: its state and binding, given the recipe's names, the places things go into
+    and the states each name is asked to take (`effects.cast`)."""
+
+    def __call__(self, names: Iterable[str], places: Collection[str] = (),
+                 asks: Mapping[str, Collection[str]] = {}) -> Start: ...
+
+
 @dataclass(frozen=True)
 class Grounding:
     """What checking needs: the world, the planner (None: check only, never complete) and how a run starts."""
 
     world: World
     planner: Planner | None
-    start: Callable[..., Start]  # given the recipe's names and the places things go into
+    start: Starter
 
 
 def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequence[Fact], planner: Planner | None,

@@ -111,7 +111,9 @@ def cast(actions: Sequence[Action], world: World) -> tuple[list[str], set[str], 
     for action in actions:
         for predicate, args in table_effect(action.verb) or ():
             state = world.predicate(predicate) if len(args) == 1 and args[0] in SLOTS else None
-            for p in action.parameters if state else ():
+            if state is None:
+                continue
+            for p in action.parameters:
                 if p.category == args[0]:
                     asks.setdefault(p.value, set()).add(state)
     return names, places, asks

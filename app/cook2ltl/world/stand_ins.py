@@ -107,6 +107,7 @@ def frame_in(scene: str, names: list[str], into: Collection[str], asks: Mapping[
             left[free] -= 1
             direct.append(name)
     named_types = {t for n in direct for t in types_for(n, available)}
+    able = _able(scene)  # the chicken to be fried is a Potato rather than an Apple, while one is left
     bound: dict[str, str] = {}
     missing: list[str] = []
     for name in names:
@@ -117,7 +118,6 @@ def frame_in(scene: str, names: list[str], into: Collection[str], asks: Mapping[
             wanted: tuple[str, ...] = ()  # a THOR object other kitchens have: missing here
         else:  # an ingredient or a mixture; or one more bowl than the kitchen has: a container of another type
             kinds = CONTAINERS if name in into or set(own) & set(CONTAINERS) else FOODS + PORTABLES
-            able = _able(scene)  # the chicken to be fried is a Potato rather than an Apple, while one is left
             wanted = (STAND_INS.get(name) or STAND_INS.get(name.rsplit("_", 1)[-1])  # a medium_saucepan is a saucepan
                       or tuple(sorted((t for t in kinds if t not in named_types),
                                       key=lambda t: len(set(asks.get(name, ())) - able.get(t, set())))))

@@ -101,16 +101,21 @@ class World:
         nothing. Only a fact that surely cannot is refused."""
         if fact in state.facts:
             return True
-        kinds = self.domain.never_added
         for schema in self.domain.schemas.values():
             for effect in schema.effects:
-                env = match_atom(effect.fact, fact, {}) if effect.value and effect.fact.predicate == fact[0] else None
-                needs = () if env is None else (*positive_facts(schema.precondition), *positive_facts(effect.condition))
-                if env is not None and all(ground(a, env) in state.facts for a in needs
-                                           if a.predicate in kinds and all(not t.startswith("?") or t in env
-                                                                           for t in a.args)):
+                if not effect.value or effect.fact.predicate != fact[0]:
+                    continue
+                env = match_atom(effect.fact, fact, {})
+                if env is None:
+                    continue
+                needs = (*positive_facts(schema.precondition), *positive_facts(effect.condition))
+                if all(ground(a, env) in state.facts for a in needs if self._settled_by(a, env)):
                     return True
         return False
+
+    def _settled_by(self, atom, env: dict) -> bool:
+        """Whether `atom` is a kind no action adds (so only the state can make it hold), fully bound by `env`."""
+        return atom.predicate in self.domain.never_added and all(not t.startswith("?") or t in env for t in atom.args)
 
     def refusal(self, name: str, call: Call, state: State) -> str:
         return why_not(self.domain.schemas[name], call.args, state)
