@@ -10,7 +10,7 @@ from cook2ltl.execution.rollout import Stop
 from cook2ltl.execution.tasks import (
     CATEGORIES,
     PARAPHRASES,
-    Condition,
+    GoalCondition,
     check_goal,
     condition_met,
     find_task,
@@ -107,13 +107,13 @@ OBJECTS = [
 
 
 @pytest.mark.parametrize("condition, met", [
-    (Condition("Tomato", {"isSliced": True}), True),  # a slice counts as the sliced tomato
-    (Condition("Tomato", {"isSliced": True, "in": "Plate", "temperature": "Cold"}), True),
-    (Condition("Tomato", {"in": "CounterTop"}), False),  # on the plate, not directly on the counter
-    (Condition("Bread", {"isSliced": True}), False),
-    (Condition("Bread", {"in": "CounterTop|1"}), True),  # an objectId works as the receptacle
-    (Condition("Tomato|2", {"isCooked": False}), True),  # and as the object, with its pieces
-    (Condition("Apple", {"isCooked": False}), False),
+    (GoalCondition("Tomato", {"isSliced": True}), True),  # a slice counts as the sliced tomato
+    (GoalCondition("Tomato", {"isSliced": True, "in": "Plate", "temperature": "Cold"}), True),
+    (GoalCondition("Tomato", {"in": "CounterTop"}), False),  # on the plate, not directly on the counter
+    (GoalCondition("Bread", {"isSliced": True}), False),
+    (GoalCondition("Bread", {"in": "CounterTop|1"}), True),  # an objectId works as the receptacle
+    (GoalCondition("Tomato|2", {"isCooked": False}), True),  # and as the object, with its pieces
+    (GoalCondition("Apple", {"isCooked": False}), False),
 ])
 def test_goal_conditions_on_thor_metadata(condition, met):
     assert condition_met(condition, OBJECTS) is met

@@ -25,7 +25,7 @@ from cook2ltl.reduce.reduction import ReductionSettings, reduce_action
 MODELS = ("smollm2-135m", "qwen2.5-coder-1.5b")  # compared when no --model is named (the README's table)
 
 
-class Task(NamedTuple):
+class ReductionTask(NamedTuple):
     primitives: str
     verb: str
     arguments: tuple[tuple[str, str], ...]  # (category, text)
@@ -33,28 +33,28 @@ class Task(NamedTuple):
 
 
 TASKS = (
-    Task("recipe", "boil", (("what", "eggs"),),
+    ReductionTask("recipe", "boil", (("what", "eggs"),),
          (r"put\((eggs|water), (pot|saucepan)\)", r"turn_on\(stovetop\)",
           r"wait\(\w+ == (boiled|boiling|cooked|done)\)")),
-    Task("recipe", "blend", (("what", "the mix"), ("time", "until slushy")),
+    ReductionTask("recipe", "blend", (("what", "the mix"), ("time", "until slushy")),
          (r"put\(mix, blender\)", r"turn_on\(blender\)", r"wait\(mix == slushy\)")),
-    Task("recipe", "preheat", (("what", "the oven"), ("temperature", "350 degrees")),
+    ReductionTask("recipe", "preheat", (("what", "the oven"), ("temperature", "350 degrees")),
          (r"turn_on\(oven\)", r"wait\(oven == (preheated|hot|350_degrees)\)")),
-    Task("recipe", "simmer", (("what", "the sauce"), ("time", "for 20 minutes")),
+    ReductionTask("recipe", "simmer", (("what", "the sauce"), ("time", "for 20 minutes")),
          (r"turn_on\(stovetop\)", r"wait\(timer == 20_minutes\)")),
-    Task("recipe", "melt", (("what", "the butter"), ("where", "a saucepan")),
+    ReductionTask("recipe", "melt", (("what", "the butter"), ("where", "a saucepan")),
          (r"put\(butter, saucepan\)", r"turn_on\(stovetop\)", r"wait\(butter == melted\)")),
-    Task("recipe", "chop", (("what", "the onion"),), (r"pick_up\(knife\)", r"cut\(onion\)")),
-    Task("recipe", "drain", (("what", "the pasta"),), (r"(pour|put)\(pasta, (colander|sieve|sink)\)",)),
-    Task("recipe", "whisk", (("what", "the eggs"), ("where", "a bowl")),
+    ReductionTask("recipe", "chop", (("what", "the onion"),), (r"pick_up\(knife\)", r"cut\(onion\)")),
+    ReductionTask("recipe", "drain", (("what", "the pasta"),), (r"(pour|put)\(pasta, (colander|sieve|sink)\)",)),
+    ReductionTask("recipe", "whisk", (("what", "the eggs"), ("where", "a bowl")),
          (r"(put|pour)\(eggs, bowl\)", r"stir\(eggs\)")),
-    Task("recipe", "refrigerate", (("what", "the dough"), ("time", "until firm")),
+    ReductionTask("recipe", "refrigerate", (("what", "the dough"), ("time", "until firm")),
          (r"open\(fridge\)", r"put\(dough, fridge\)", r"wait\(dough == firm\)")),
-    Task("ai2thor", "microwave", (("what", "the potato"),),
+    ReductionTask("ai2thor", "microwave", (("what", "the potato"),),
          (r"open\(microwave\)", r"put\(potato, microwave\)", r"close\(microwave\)", r"turn_on\(microwave\)")),
-    Task("ai2thor", "chop", (("what", "the tomato"),), (r"pick_up\(knife\)", r"slice\(tomato\)")),
-    Task("ai2thor", "cut", (("what", "the bread"),), (r"pick_up\(knife\)", r"slice\(bread\)")),
-    Task("ai2thor", "refrigerate", (("what", "the apple"),),
+    ReductionTask("ai2thor", "chop", (("what", "the tomato"),), (r"pick_up\(knife\)", r"slice\(tomato\)")),
+    ReductionTask("ai2thor", "cut", (("what", "the bread"),), (r"pick_up\(knife\)", r"slice\(bread\)")),
+    ReductionTask("ai2thor", "refrigerate", (("what", "the apple"),),
          (r"open\(fridge\)", r"pick_up\(apple\)", r"put\(apple, fridge\)", r"close\(fridge\)")),
 )
 # Two short plans of one set, so the smoke pass has a cold and a warm reduction: seconds with smollm2.
@@ -72,7 +72,7 @@ def key_calls_found(lines: list[str], keys: tuple[str, ...]) -> int:
     return found
 
 
-def reduce_tasks(model_name: str, comments: bool, tasks: tuple[Task, ...], echo: Callable[[str], None],
+def reduce_tasks(model_name: str, comments: bool, tasks: tuple[ReductionTask, ...], echo: Callable[[str], None],
                  cold_prefix: bool = True) -> dict:
     """Every task reduced by one model: plans passed, share of key calls found, seconds, tokens, and each plan.
     With `cold_prefix` (what the table reports) the static prompt prefix is evaluated, never restored from disk."""

@@ -41,7 +41,7 @@ PARAPHRASES = "cook2ltl paraphrases"  # the source of paraphrases.toml's tasks
 
 
 @dataclass(frozen=True)
-class Condition:
+class GoalCondition:
     object: str  # a THOR object type, or one objectId
     state: Mapping[str, Any]  # field -> value
 
@@ -60,14 +60,14 @@ class Task:
     scene: str
     category: str
     source: str
-    goal: tuple[Condition, ...]
+    goal: tuple[GoalCondition, ...]
     setup: tuple[Mapping[str, str], ...] = ()  # {action = "DirtyObject", object = "Mug"}
     reference: tuple[str, ...] = ()  # plan lines in the ai2thor primitives
 
 
 @dataclass(frozen=True)
 class GoalCheck:
-    conditions: tuple[tuple[Condition, bool], ...]
+    conditions: tuple[tuple[GoalCondition, bool], ...]
 
     @property
     def met(self) -> bool:
@@ -116,7 +116,7 @@ def check_goal(task: Task, objects: Sequence[Obj]) -> GoalCheck:
     return GoalCheck(tuple((c, condition_met(c, objects)) for c in task.goal))
 
 
-def condition_met(condition: Condition, objects: Sequence[Obj]) -> bool:
+def condition_met(condition: GoalCondition, objects: Sequence[Obj]) -> bool:
     types = {o["objectId"]: o["objectType"] for o in objects}
     return any(_has(o, condition.state, types) for o in _candidates(condition.object, objects))
 
@@ -185,7 +185,7 @@ def _task(entry: Mapping[str, Any], path: Path) -> Task:
         if "object" not in raw or not fields or unknown:
             raise bad(f"a goal condition needs an object and some of {', '.join(sorted(FIELDS))}"
                       + (f" (unknown: {', '.join(unknown)})" if unknown else "") + ".")
-        goal.append(Condition(raw["object"], fields))
+        goal.append(GoalCondition(raw["object"], fields))
     setup = tuple(MappingProxyType(dict(s)) for s in entry.get("setup", []))
     if any(set(s) != {"action", "object"} for s in setup):
         raise bad("a setup step is { action = \"DirtyObject\", object = \"Mug\" }.")

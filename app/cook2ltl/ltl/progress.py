@@ -37,7 +37,7 @@ from cook2ltl.ltl.ast import (
 from cook2ltl.ltl.limits import WorkLimit
 from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, equiv_, or_
 
-Step = frozenset[Atom]
+Letter = frozenset[Atom]
 
 
 class Verdict(Enum):
@@ -78,7 +78,7 @@ def progress(formula: Formula, step: Iterable[Atom]) -> Formula:
 
 # Progressions already worked out, by (subformula, step); like an LRU cache
 # it keeps what it holds alive, so past this many entries it starts afresh.
-_MEMO: dict[tuple[Formula, Step], Formula] = {}
+_MEMO: dict[tuple[Formula, Letter], Formula] = {}
 _MEMO_ENTRIES = 1 << 18
 
 
@@ -86,7 +86,7 @@ def clear_memo() -> None:
     _MEMO.clear()
 
 
-def _progress(root: Formula, step: Step) -> Formula:
+def _progress(root: Formula, step: Letter) -> Formula:
     """Progression on an explicit stack of rules (see :func:`_rule`), so a
     formula of any depth progresses without recursion."""
     limit = WorkLimit("progressing the formula by one step")
@@ -111,7 +111,7 @@ def _progress(root: Formula, step: Step) -> Formula:
             stack.append((operand, _rule(operand)))
 
 
-def _known(f: Formula, step: Step) -> Formula | None:
+def _known(f: Formula, step: Letter) -> Formula | None:
     """The progression when it needs no work: of a constant, an atom or a
     negated atom, or one in the memo table; None otherwise."""
     match f:
@@ -196,7 +196,7 @@ def holds(formula: Formula, trace: Iterable[Iterable[Atom]]) -> bool:
 @dataclass(frozen=True)
 class Monitored:
     index: int  # 1 for the first step
-    step: Step
+    step: Letter
     remaining: Formula
     verdict: Verdict
 
