@@ -37,7 +37,7 @@ from cook2ltl.ltl.ast import (
 from cook2ltl.ltl.limits import WorkLimit
 from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, equiv_, or_
 
-Letter = frozenset[Atom]
+Letter = frozenset[Atom]  # one position of a trace: the atoms true there
 
 
 class Verdict(Enum):
