@@ -51,6 +51,9 @@ def test_bench_smoke_writes_every_result(tmp_path):
     assert 0 < micro["ltl"]["progress_ms_per_step_cold"]["median"] < 50
     assert micro["kitchen"]["actions"] > 0 and micro["kitchen"]["seconds_per_action"] > 0
     assert "first_screen_seconds" in micro["app"] or "error" in micro["app"]
+    shares = micro["translation"]["shares"]  # where a cold translation's time went; no second counted twice
+    assert set(shares) == {"model", "kitchen", "world model", "parsing", "rest"} and min(shares.values()) >= 0
+    assert micro["translation"]["parts_seconds"]["model"] > 0 and micro["translation"]["llm_calls"] > 0
 
     reduce = results["reduce"]  # two ai2thor actions reduced by smollm2: one cold, one warm
     [row] = reduce["rows"]

@@ -43,6 +43,7 @@ def test_a_failing_plan_is_repaired_with_the_failure_in_the_prompt(validators, l
     stats = translation.stats
     assert (stats.llm_calls, stats.repair_calls, stats.checked, stats.validated, stats.repaired) == (1, 1, 1, 1, 1)
     assert model.calls == 2 and stats.prompt_tokens == sum(len(p.split()) for p in model.prompts)
+    assert stats.kitchen_seconds > result.validation.seconds > 0  # the failed run in the kitchen counts too
     # The problem under the header, then the lines before the failing one, kept; the static prefix unchanged.
     assert model.prompts[1].endswith(
         "def microwave(potato: what):\n    # this plan failed: line 2 put(potato, microwave): the agent holds nothing; "

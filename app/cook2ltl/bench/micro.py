@@ -1,5 +1,6 @@
 """Micro-benchmarks: span model per sentence, language model per reduction, LTL progression per step, kitchen
-per action, and the app's cold start (a fresh interpreter to its first screen).
+per action, the app's cold start (a fresh interpreter to its first screen), and where a cold translation's
+time goes (the model, the kitchen check, the world model, parsing, the rest).
 
 Models are loaded before the clock starts, except for the cold start, which is all about loading.
 """
@@ -9,11 +10,14 @@ from __future__ import annotations
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
 
+from cook2ltl import paths
 from cook2ltl.assembly.backends import load_model
+from cook2ltl.assembly.translators import TranslateOptions, open_translator
 from cook2ltl.assembly.trial import TrialDone, reference_formula, run_trial
 from cook2ltl.bench.backends import parsers
 from cook2ltl.bench.ltl import measure_ltl
@@ -22,6 +26,9 @@ from cook2ltl.bench.table1 import eval_recipes
 from cook2ltl.domain.actions import Action
 from cook2ltl.execution.launcher import start_embedded
 from cook2ltl.execution.tasks import find_task
+from cook2ltl.parse import parse_recipe
+from cook2ltl.pipeline.records import TranslationFinished
+from cook2ltl.pipeline.translator import translate
 from cook2ltl.preprocess import split_sentences
 from cook2ltl.reduce.action import parameter
 from cook2ltl.reduce.primitives import load_primitives
@@ -74,15 +81,39 @@ def language_model(name: str, count: int) -> dict:
         usages.append(reduce_action(action, load_primitives(set_name), [], model, ReductionSettings()).usage)
     warm = usages[1:] or usages
     seconds = sum(u.seconds for u in warm)
+    decoding = sum(u.seconds - u.prompt_seconds for u in warm)
     return {
         "model": name, "reductions": len(usages), "load_seconds": load,
         "first_reduction_seconds": usages[0].seconds,
         "seconds_per_reduction": statistics.mean(u.seconds for u in warm),
         "completion_tokens_per_second": sum(u.completion_tokens for u in warm) / seconds,
+        "prompt_seconds_per_reduction": statistics.mean(u.prompt_seconds for u in warm),
+        "decoding_tokens_per_second": sum(u.completion_tokens for u in warm) / decoding if decoding else None,
         "tokens_per_second": sum(u.prompt_tokens + u.completion_tokens for u in warm) / seconds,  # prompt read too
         "prompt_tokens_per_reduction": statistics.mean(u.prompt_tokens for u in warm),
         "completion_tokens_per_reduction": statistics.mean(u.completion_tokens for u in warm),
     }
+
+
+def translation_shares(model_name: str, text: str, echo: Callable[[str], None]) -> dict:
+    """Where a cold translation's time goes: `text` translated from an empty library with the defaults of
+    `cook2ltl translate` (the recipe set, AR+𝔸, the world model, the kitchen check where the rule wants it)."""
+    backends, model = parsers(), load_model(model_name)
+    model.complete("", "x", 'root ::= "x"', 1)  # the weights are read outside the timings
+    with tempfile.TemporaryDirectory() as folder, open_translator(
+            load_primitives("recipe"), model, Path(folder) / "library.sqlite", TranslateOptions(), echo) as translator:
+        started = time.perf_counter()
+        parsed = parse_recipe(text, backends.spans, backends.dependencies)
+        parsing = time.perf_counter() - started
+        translation = next(e.translation for e in translate(parsed, translator) if isinstance(e, TranslationFinished))
+    stats = translation.stats
+    parts = {"model": stats.llm_seconds, "kitchen": stats.kitchen_seconds, "world model": stats.world_seconds,
+             "parsing": parsing}
+    total = parsing + stats.seconds
+    parts["rest"] = total - sum(parts.values())
+    return {"model": model_name, "seconds": total, "actions": stats.actions, "llm_calls": stats.llm_calls,
+            "repair_calls": stats.repair_calls, "parts_seconds": parts,
+            "shares": {part: seconds / total for part, seconds in parts.items()}}
 
 
 def kitchen_actions(task_ids: tuple[str, ...]) -> dict:
@@ -120,12 +151,15 @@ def app_cold_start(repeats: int) -> dict:
 
 def run_micro(model: str, smoke: bool, out: Path, echo: Callable[[str], None]) -> dict:
     sentences = [s.text for _, text in eval_recipes(1 if smoke else None) for s in split_sentences(text)]
+    demo = (paths.assets_dir() / "recipes" / "pasta-bake.txt").read_text(encoding="utf-8")
+    demo = " ".join(s.text for s in split_sentences(demo)[:2]) if smoke else demo
     steps: list[tuple[str, Callable[[], dict]]] = [
         ("span_model", lambda: span_model(sentences)),
         ("language_model", lambda: language_model(model, 1 if smoke else len(REDUCTIONS))),
         ("ltl", lambda: measure_ltl(3 if smoke else 20)),
         ("kitchen", lambda: kitchen_actions(PAPER_TASKS[:1] if smoke else PAPER_TASKS)),
         ("app", lambda: app_cold_start(1 if smoke else 3)),
+        ("translation", lambda: translation_shares(model, demo, echo)),
     ]
     record: dict = {}
     for name, measure in steps:
@@ -148,6 +182,10 @@ def micro_markdown(r: dict) -> str:
                     f"| first {m['first_reduction_seconds']:.1f} s (with the prompt prefix); "
                     f"{m['prompt_tokens_per_reduction']:.0f} prompt + {m['completion_tokens_per_reduction']:.0f} "
                     f"completion tokens; loading {m['load_seconds']:.1f} s |")
+        if m.get("decoding_tokens_per_second"):
+            rows.append(f"| … prompt and decoding | {m['prompt_seconds_per_reduction']:.2f} s prompt / reduction, "
+                        f"{m['decoding_tokens_per_second']:.1f} tokens / s decoding | the prompt's tail beyond the "
+                        f"cached static part, then one token at a time under the grammar |")
     if "ltl" in r:
         t = r["ltl"]
         rows.append(f"| LTL progression | {t['progress_ms_per_step_cold']['median']:.3f} ms / step cold, "
@@ -163,4 +201,9 @@ def micro_markdown(r: dict) -> str:
         rows.append(f"| app cold start | {a['first_screen_seconds']:.2f} s to the first screen | imports "
                     f"{a['import_seconds']:.2f} s; median of {a['repeats']} fresh interpreters |" if "error" not in a
                     else f"| app cold start | not measured | {a['error']} |")
+    if "translation" in r:
+        t = r["translation"]
+        shares = ", ".join(f"{part} {share:.0%}" for part, share in t["shares"].items())
+        rows.append(f"| a cold translation of the demo recipe ({t['model']}) | {t['seconds']:.1f} s | {shares}; "
+                    f"{t['actions']} actions, {t['llm_calls']} model calls + {t['repair_calls']} repairs |")
     return "| what | speed | notes |\n|---|---|---|\n" + "\n".join(rows) + "\n"

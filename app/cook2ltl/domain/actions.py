@@ -133,6 +133,7 @@ class Usage:
     prompt_tokens: int = 0
     completion_tokens: int = 0
     seconds: float = 0.0
+    prompt_seconds: float = 0.0  # of `seconds`, evaluating the prompt (what the KV cache did not hold)
 
 
 @dataclass(frozen=True)

@@ -63,6 +63,10 @@ class Stats:
     planner_lines: int = 0  # plan lines the planner wrote
     effect_calls: int = 0  # model calls writing the effect of a verb the verb-effect table lacks
     seconds: float = 0.0
+    # Of `seconds`, where the time went besides the model's (llm_seconds): running plans in the kitchen, and
+    # the world model's checks, completions and the recipe's start.
+    kitchen_seconds: float = 0.0
+    world_seconds: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -124,8 +124,9 @@ class _Run:
     """The state of one translation: the library's live verbs and the running counts."""
 
     def __init__(self, translator: Translator) -> None:
-        self.t = translator
         self.stats = Stats()
+        self.t = translator if translator.validator is None else replace(
+            translator, validator=_TimedCheck(translator.validator, self._count))
         self.uses_library = translator.variant == Variant.AR_LIBRARY
         if self.uses_library and translator.library is None:
             raise ValueError("the AR+A variant needs a library")
@@ -216,10 +217,12 @@ class _Run:
         """The kitchen before the first step, holding every object the recipe names."""
         grounding = self.t.grounding
         if grounding is not None:
+            started = time.perf_counter()
             actions = [a for step in parsed.steps for frame in step.frames for a in actions_of(frame)]
             start = grounding.start(*cast(actions, grounding.world))
             self.world_state = self.world_start = start.state
             self.world_binding, self.scene = dict(start.binding), start.scene
+            self._count(world_seconds=time.perf_counter() - started)
 
     def _so_far(self) -> RecipeSoFar | None:
         """Where the recipe has got to in its THOR kitchen, for the kitchen check; None outside one."""
@@ -245,9 +248,11 @@ class _Run:
         if grounding is None:
             return None
         effect = self._effect(action) if effect is None else effect
+        started = time.perf_counter()
         checked = check_plan(grounding.world, self.world_state, plan, effect, grounding.planner, origin)
         self.world_state = checked.state
-        self._count(grounded=1, reached=int(checked.effect_reached), planner_lines=checked.planner_lines)
+        self._count(grounded=1, reached=int(checked.effect_reached), planner_lines=checked.planner_lines,
+                    world_seconds=time.perf_counter() - started)
         return checked
 
     def _learn(self, action: Action, reduction: Reduction, plan: tuple[Call, ...], validation: Validation | None,
@@ -313,3 +318,20 @@ class _Run:
 
     def _count(self, **increments) -> None:
         self.stats = replace(self.stats, **{k: getattr(self.stats, k) + v for k, v in increments.items()})
+
+
+class _TimedCheck:
+    """The translator's kitchen check, its time counted in the run's stats (`kitchen_seconds`)."""
+
+    def __init__(self, validator: PlanValidator, count) -> None:
+        self.validator, self.count = validator, count
+
+    def validate(self, action: Action, plan: tuple[Call, ...], so_far: RecipeSoFar | None = None) -> Validation:
+        started = time.perf_counter()
+        try:
+            return self.validator.validate(action, plan, so_far)
+        finally:
+            self.count(kitchen_seconds=time.perf_counter() - started)
+
+    def close(self) -> None:
+        self.validator.close()

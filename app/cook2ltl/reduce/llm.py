@@ -110,14 +110,20 @@ class LlamaModel:
                 return False
             return stop is None or not stop(self._text(ids))
 
+        generated: list[int] = []
+        prompt_seconds = 0.0
         try:
-            generated = list(greedy_tokens(llama, grammar, tokens, min(max_tokens, room), keep_going))
+            for token in greedy_tokens(llama, grammar, tokens, min(max_tokens, room), keep_going):
+                # the first token comes once the prompt is evaluated (its tail beyond the cached static part)
+                prompt_seconds = prompt_seconds or time.perf_counter() - started
+                generated.append(token)
         except GrammarRejected as error:
             hint = "every word in it is escaped, so this is a bug in cook2ltl: please report it with the recipe."
             raise UserError("llama.cpp rejected the generated grammar.", hint) from error
         self._check(deadline)
+        seconds = time.perf_counter() - started
         return Completion(self._text(generated),
-                          Usage(len(tokens), len(generated), time.perf_counter() - started))
+                          Usage(len(tokens), len(generated), seconds, prompt_seconds or seconds))
 
     def complete_lines(self, static: str, dynamic: str, next_lines: Callable[[str], list[str] | None],
                        tokens_per_line: int) -> Completion:
