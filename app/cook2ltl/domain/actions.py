@@ -134,6 +134,7 @@ class Usage:
     completion_tokens: int = 0
     seconds: float = 0.0
     prompt_seconds: float = 0.0  # of `seconds`, evaluating the prompt (what the KV cache did not hold)
+    choice_seconds: float = 0.0  # besides `seconds`: the caller choosing the lines the world allows, line by line
 
 
 @dataclass(frozen=True)

@@ -64,7 +64,7 @@ class Stats:
     effect_calls: int = 0  # model calls writing the effect of a verb the verb-effect table lacks
     seconds: float = 0.0
     # Of `seconds`, where the time went besides the model's (llm_seconds): running plans in the kitchen, and
-    # the world model's checks, completions and the recipe's start.
+    # the world model's checks, completions, the recipe's start and the lines it allows while the model writes.
     kitchen_seconds: float = 0.0
     world_seconds: float = 0.0
 

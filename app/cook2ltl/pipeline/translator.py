@@ -278,7 +278,8 @@ class _Run:
         for reduction in checked.model_calls:
             usage = reduction.usage
             self._count(prompt_tokens=usage.prompt_tokens, completion_tokens=usage.completion_tokens,
-                        llm_seconds=usage.seconds, dropped_lines=len(reduction.dropped))
+                        llm_seconds=usage.seconds, dropped_lines=len(reduction.dropped),
+                        world_seconds=usage.choice_seconds)
         self._count(llm_calls=1, repair_calls=len(checked.failed))
         if checked.validation is not None and checked.validation.checked:
             passed = checked.validation.passed

@@ -138,21 +138,28 @@ class LlamaModel:
         self._keep_only(llama, prefix, static, deadline)
         generated: list[int] = []
         text = ""
+        choosing = prompt_seconds = 0.0  # the caller's time choosing lines is not the model's
 
         def line_open(ids: list[int]) -> bool:
             return not (self.cancel.is_set() or time.perf_counter() > deadline or self._text(ids).endswith("\n"))
 
         while len(tokens) + len(generated) + tokens_per_line < llama.n_ctx():
+            chose = time.perf_counter()
             options = next_lines(text)
+            choosing += time.perf_counter() - chose
             if not options:
                 break
-            line = list(greedy_tokens(llama, line_grammar(options), tokens + generated, tokens_per_line, line_open))
+            line: list[int] = []
+            for token in greedy_tokens(llama, line_grammar(options), tokens + generated, tokens_per_line, line_open):
+                prompt_seconds = prompt_seconds or time.perf_counter() - started - choosing
+                line.append(token)
             self._check(deadline)
             generated += line
             text = self._text(generated)
             if not line or not text.endswith("\n") or text.endswith("\n\n") or text == "\n":
                 break  # a blank line: the model ended the body
-        return Completion(text, Usage(len(tokens), len(generated), time.perf_counter() - started))
+        seconds = time.perf_counter() - started - choosing
+        return Completion(text, Usage(len(tokens), len(generated), seconds, prompt_seconds or seconds, choosing))
 
     def _text(self, ids: list[int]) -> str:
         return self._llama.detokenize(ids).decode("utf-8", errors="ignore")
