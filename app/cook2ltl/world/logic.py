@@ -9,12 +9,15 @@ Effects follow PDDL: every condition is read in the old state, deletes are appli
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Union
 
 Fact = tuple[str, ...]  # ("in", "egg", "pot"): a predicate and its objects
+# A condition made into a function once (each node's `test`, cached on it): holds(condition, state, env) is
+# condition.test(state, env), with no dispatch on the node's type at every evaluation.
+Test = Callable[["State", Mapping[str, str]], bool]
 
 
 @dataclass(frozen=True)
@@ -43,31 +46,64 @@ class Atom:
     predicate: str
     args: tuple[str, ...]
 
+    @cached_property
+    def test(self) -> Test:
+        predicate, args = self.predicate, self.args
+        if not any(a.startswith("?") for a in args):
+            fact = (predicate, *args)
+            return lambda state, env: fact in state.facts
+        return lambda state, env: (predicate, *(env[a] if a.startswith("?") else a for a in args)) in state.facts
+
 
 @dataclass(frozen=True)
 class Equal:
     left: str
     right: str
 
+    @cached_property
+    def test(self) -> Test:
+        left, right = self.left, self.right
+        return lambda state, env: value_of(left, env) == value_of(right, env)
+
 
 @dataclass(frozen=True)
 class Constant:
     value: bool
+
+    @cached_property
+    def test(self) -> Test:
+        value = self.value
+        return lambda state, env: value
 
 
 @dataclass(frozen=True)
 class Not:
     arg: Condition
 
+    @cached_property
+    def test(self) -> Test:
+        arg = self.arg.test
+        return lambda state, env: not arg(state, env)
+
 
 @dataclass(frozen=True)
 class And:
     args: tuple[Condition, ...]
 
+    @cached_property
+    def test(self) -> Test:
+        tests = tuple(a.test for a in self.args)
+        return lambda state, env: all(t(state, env) for t in tests)
+
 
 @dataclass(frozen=True)
 class Or:
     args: tuple[Condition, ...]
+
+    @cached_property
+    def test(self) -> Test:
+        tests = tuple(a.test for a in self.args)
+        return lambda state, env: any(t(state, env) for t in tests)
 
 
 @dataclass(frozen=True)
@@ -75,15 +111,26 @@ class Exists:
     variables: tuple[str, ...]
     body: Condition
 
+    @cached_property
+    def test(self) -> Test:
+        variables, body, test = self.variables, self.body, self.body.test
+        return lambda state, env: any(test(state, e) for e in bindings(variables, body, state, env))
+
 
 @dataclass(frozen=True)
 class Forall:
     variables: tuple[str, ...]
     body: Condition
 
+    @cached_property
+    def test(self) -> Test:
+        variables, test = self.variables, self.body.test
+        return lambda state, env: all(test(state, e) for e in bindings(variables, TRUE, state, env))
+
 
 Condition = Union[Atom, Equal, Constant, Not, And, Or, Exists, Forall]
 Env = Mapping[str, str]
+TRUE = Constant(True)
 
 
 @dataclass(frozen=True)
@@ -115,24 +162,7 @@ def ground(atom: Atom, env: Env) -> Fact:
 
 
 def holds(condition: Condition, state: State, env: Env) -> bool:
-    match condition:
-        case Atom():
-            return ground(condition, env) in state.facts
-        case Not(arg):
-            return not holds(arg, state, env)
-        case And(args):
-            return all(holds(a, state, env) for a in args)
-        case Or(args):
-            return any(holds(a, state, env) for a in args)
-        case Equal(left, right):
-            return value_of(left, env) == value_of(right, env)
-        case Constant(value):
-            return value
-        case Exists(variables, body):
-            return any(holds(body, state, e) for e in bindings(variables, body, state, env))
-        case Forall(variables, body):
-            return all(holds(body, state, e) for e in bindings(variables, Constant(True), state, env))
-    raise TypeError(f"not a condition: {condition!r}")
+    return condition.test(state, env)
 
 
 def bindings(variables: tuple[str, ...], condition: Condition, state: State, env: Env) -> Iterator[dict[str, str]]:
