@@ -47,6 +47,10 @@ class Atom:
     args: tuple[str, ...]
 
     @cached_property
+    def free(self) -> frozenset[str]:
+        return frozenset(a for a in self.args if a.startswith("?"))
+
+    @cached_property
     def test(self) -> Test:
         predicate, args = self.predicate, self.args
         if not any(a.startswith("?") for a in args):
@@ -61,6 +65,10 @@ class Equal:
     right: str
 
     @cached_property
+    def free(self) -> frozenset[str]:
+        return frozenset(t for t in (self.left, self.right) if t.startswith("?"))
+
+    @cached_property
     def test(self) -> Test:
         left, right = self.left, self.right
         return lambda state, env: value_of(left, env) == value_of(right, env)
@@ -69,6 +77,8 @@ class Equal:
 @dataclass(frozen=True)
 class Constant:
     value: bool
+
+    free = frozenset()
 
     @cached_property
     def test(self) -> Test:
@@ -81,6 +91,10 @@ class Not:
     arg: Condition
 
     @cached_property
+    def free(self) -> frozenset[str]:
+        return self.arg.free
+
+    @cached_property
     def test(self) -> Test:
         arg = self.arg.test
         return lambda state, env: not arg(state, env)
@@ -91,6 +105,10 @@ class And:
     args: tuple[Condition, ...]
 
     @cached_property
+    def free(self) -> frozenset[str]:
+        return frozenset().union(*(a.free for a in self.args))
+
+    @cached_property
     def test(self) -> Test:
         tests = tuple(a.test for a in self.args)
         return lambda state, env: all(t(state, env) for t in tests)
@@ -99,6 +117,10 @@ class And:
 @dataclass(frozen=True)
 class Or:
     args: tuple[Condition, ...]
+
+    @cached_property
+    def free(self) -> frozenset[str]:
+        return frozenset().union(*(a.free for a in self.args))
 
     @cached_property
     def test(self) -> Test:
@@ -112,6 +134,10 @@ class Exists:
     body: Condition
 
     @cached_property
+    def free(self) -> frozenset[str]:
+        return self.body.free - set(self.variables)
+
+    @cached_property
     def test(self) -> Test:
         variables, body, test = self.variables, self.body, self.body.test
         return lambda state, env: any(test(state, e) for e in bindings(variables, body, state, env))
@@ -121,6 +147,10 @@ class Exists:
 class Forall:
     variables: tuple[str, ...]
     body: Condition
+
+    @cached_property
+    def free(self) -> frozenset[str]:
+        return self.body.free - set(self.variables)
 
     @cached_property
     def test(self) -> Test:
@@ -167,20 +197,32 @@ def holds(condition: Condition, state: State, env: Env) -> bool:
 
 def bindings(variables: tuple[str, ...], condition: Condition, state: State, env: Env) -> Iterator[dict[str, str]]:
     """Values of `variables` (extending `env`) that may satisfy `condition`: every binding that does is
-    among them. Positive facts of a conjunction narrow the search; the rest range over all objects."""
-    yield from _join(list(variables), positive_facts(condition), state, dict(env))
+    among them. Positive facts of a conjunction narrow the search; the rest range over all objects, and a
+    conjunct is tested as soon as its variables are bound, so a binding that fails it is not extended."""
+    checks = [(c.free, c.test) for c in conjuncts(condition)]
+    yield from _join(list(variables), positive_facts(condition), checks, state, dict(env))
 
 
 def positive_facts(condition: Condition) -> list[Atom]:
     """The atoms a condition asserts outright: itself, or those of a conjunction, however nested."""
-    if isinstance(condition, Atom):
-        return [condition]
+    return [c for c in conjuncts(condition) if isinstance(c, Atom)]
+
+
+def conjuncts(condition: Condition) -> list[Condition]:
+    """What must each hold for `condition` to hold: itself, or the parts of a conjunction, however nested."""
     if isinstance(condition, And):
-        return [a for arg in condition.args for a in positive_facts(arg)]
-    return []
+        return [c for arg in condition.args for c in conjuncts(arg)]
+    return [condition]
 
 
-def _join(free: list[str], facts: list[Atom], state: State, env: dict[str, str]) -> Iterator[dict[str, str]]:
+def _join(free: list[str], facts: list[Atom], checks: list[tuple[frozenset[str], Test]], state: State,
+          env: dict[str, str]) -> Iterator[dict[str, str]]:
+    pending = []
+    for names, test in checks:
+        if not names <= env.keys():
+            pending.append((names, test))
+        elif not test(state, env):
+            return  # no extension of this binding can satisfy the condition
     unbound = [v for v in free if v not in env]
     if not unbound:
         yield env
@@ -189,13 +231,13 @@ def _join(free: list[str], facts: list[Atom], state: State, env: dict[str, str])
     if atom is None:
         variable = unbound[0]
         for obj in state.objects:
-            yield from _join(free, facts, state, {**env, variable: obj})
+            yield from _join(free, facts, pending, state, {**env, variable: obj})
         return
     rest = [a for a in facts if a is not atom]
     for fact in state.by_predicate.get(atom.predicate, ()):
         extended = match_atom(atom, fact, env)
         if extended is not None:
-            yield from _join(free, rest, state, extended)
+            yield from _join(free, rest, pending, state, extended)
 
 
 def match_atom(atom: Atom, fact: Fact, env: Env) -> dict[str, str] | None:
