@@ -101,13 +101,16 @@ class Not:
 
 
 @dataclass(frozen=True)
-class And:
+class _Junction:
     args: tuple[Condition, ...]
 
     @cached_property
     def free(self) -> frozenset[str]:
         return frozenset().union(*(a.free for a in self.args))
 
+
+@dataclass(frozen=True)
+class And(_Junction):
     @cached_property
     def test(self) -> Test:
         tests = tuple(a.test for a in self.args)
@@ -115,13 +118,7 @@ class And:
 
 
 @dataclass(frozen=True)
-class Or:
-    args: tuple[Condition, ...]
-
-    @cached_property
-    def free(self) -> frozenset[str]:
-        return frozenset().union(*(a.free for a in self.args))
-
+class Or(_Junction):
     @cached_property
     def test(self) -> Test:
         tests = tuple(a.test for a in self.args)
@@ -129,7 +126,7 @@ class Or:
 
 
 @dataclass(frozen=True)
-class Exists:
+class _Quantified:
     variables: tuple[str, ...]
     body: Condition
 
@@ -137,6 +134,9 @@ class Exists:
     def free(self) -> frozenset[str]:
         return self.body.free - set(self.variables)
 
+
+@dataclass(frozen=True)
+class Exists(_Quantified):
     @cached_property
     def test(self) -> Test:
         variables, body, test = self.variables, self.body, self.body.test
@@ -144,14 +144,7 @@ class Exists:
 
 
 @dataclass(frozen=True)
-class Forall:
-    variables: tuple[str, ...]
-    body: Condition
-
-    @cached_property
-    def free(self) -> frozenset[str]:
-        return self.body.free - set(self.variables)
-
+class Forall(_Quantified):
     @cached_property
     def test(self) -> Test:
         variables, test = self.variables, self.body.test
