@@ -25,11 +25,14 @@ class GrammarRejected(ValueError):
 
 
 def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
-                  keep_going: Callable[[list[int]], bool]) -> Iterator[int]:
+                  keep_going: Callable[[list[int]], bool],
+                  forced: Callable[[list[int]], list[int]] | None = None) -> Iterator[int]:
     """Yield the tokens of the greedy completion of `prompt` that `grammar` admits, up to an end-of-generation
     token or `max_tokens`. Evaluation goes on from the tokens `llama` already holds (a shared prefix);
     `keep_going(tokens so far)` may end it after any token. The token that ends it is kept: one token can
-    close a line and open the next (")\n"), and cutting it would leave the line unfinished."""
+    close a line and open the next (")\n"), and cutting it would leave the line unfinished. `forced(tokens so
+    far)` may give the tokens that must follow (the grammar leaves one way to go on): they are evaluated in one
+    batch, which costs about one token's time on a CPU, yielded, and the completion ends."""
     import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
     vocab = llama._model.vocab
@@ -54,6 +57,11 @@ def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
             generated.append(token)
             yield token
             if not keep_going(generated):
+                return
+            rest = forced(generated) if forced is not None else []
+            if rest and len(generated) + len(rest) <= max_tokens:
+                llama.eval([token, *rest])
+                yield from rest
                 return
             llama.eval([token])
     finally:

@@ -150,7 +150,18 @@ class LlamaModel:
             if not options:
                 break
             line: list[int] = []
-            for token in greedy_tokens(llama, line_grammar(options), tokens + generated, tokens_per_line, line_open):
+
+            def forced(ids: list[int], options: list[str] = options) -> list[int]:
+                """The rest of the line, once only one of the options can follow what is written."""
+                written = self._text(ids)
+                lines = ("\n", *(f"    {option}\n" for option in options))
+                possible = [candidate for candidate in lines if candidate.startswith(written)]
+                if len(possible) != 1 or len(possible[0]) == len(written):
+                    return []
+                return llama.tokenize(possible[0][len(written):].encode(), add_bos=False)
+
+            for token in greedy_tokens(llama, line_grammar(options), tokens + generated, tokens_per_line, line_open,
+                                       forced):
                 prompt_seconds = prompt_seconds or time.perf_counter() - started - choosing
                 line.append(token)
             self._check(deadline)
