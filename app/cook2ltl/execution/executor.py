@@ -19,9 +19,12 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Protocol
 
+from cook2ltl import paths
 from cook2ltl.domain.actions import WAIT, PrimitiveSet
 from cook2ltl.ltl.ast import Atom
 from cook2ltl.reduce.primitives import load_primitives
@@ -49,6 +52,12 @@ COMPOSED = ("put", "drop", "fill", WAIT)
 
 def thor_primitives() -> PrimitiveSet:
     """The primitive set this executor runs: its names and parameters are assets/primitives/ai2thor.toml's."""
+    return _thor_set(paths.assets_dir())
+
+
+@cache
+def _thor_set(assets: Path) -> PrimitiveSet:
+    """Read once per assets folder: every rollout and kitchen check asks for it."""
     return load_primitives("ai2thor")
 
 

@@ -44,12 +44,12 @@ class KitchenValidator:
     """Runs plans in one embedded kitchen, started at the first plan and stopped by `close`."""
 
     def __init__(self, primitives: PrimitiveSet) -> None:
-        missing = unsupported(primitives)
+        self._meaning = meanings(primitives)
+        missing = [p.name for p in primitives.primitives if p.name not in self._meaning]
         if missing:
             raise UserError(f"The kitchen cannot check plans of the primitive set {primitives.name!r}: it has no "
                             f"action for {', '.join(missing)}.", "translate with --no-validate.")
         self.primitives = primitives
-        self._meaning = meanings(primitives)
         self._controller = None
 
     def validate(self, action: Action, plan: tuple[Call, ...], so_far: RecipeSoFar | None = None) -> Validation:

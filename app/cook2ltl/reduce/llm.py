@@ -150,11 +150,11 @@ class LlamaModel:
             if not options:
                 break
             line: list[int] = []
+            lines = ("\n", *(f"    {option}\n" for option in options))
 
-            def forced(ids: list[int], options: list[str] = options) -> list[int]:
+            def forced(ids: list[int], lines: tuple[str, ...] = lines) -> list[int]:
                 """The rest of the line, once only one of the options can follow what is written."""
                 written = self._text(ids)
-                lines = ("\n", *(f"    {option}\n" for option in options))
                 possible = [candidate for candidate in lines if candidate.startswith(written)]
                 if len(possible) != 1 or len(possible[0]) == len(written):
                     return []

@@ -139,21 +139,21 @@ class _Quantified:
 class Exists(_Quantified):
     @cached_property
     def test(self) -> Test:
-        variables, body, test = self.variables, self.body, self.body.test
-        return lambda state, env: any(test(state, e) for e in bindings(variables, body, state, env))
+        variables, test = list(self.variables), self.body.test
+        facts, checks = positive_facts(self.body), _checks(self.body)  # planned once: this runs in hot loops
+        return lambda state, env: any(test(state, e) for e in _join(variables, facts, checks, state, dict(env)))
 
 
 @dataclass(frozen=True)
 class Forall(_Quantified):
     @cached_property
     def test(self) -> Test:
-        variables, test = self.variables, self.body.test
-        return lambda state, env: all(test(state, e) for e in bindings(variables, TRUE, state, env))
+        variables, test = list(self.variables), self.body.test
+        return lambda state, env: all(test(state, e) for e in _join(variables, [], [], state, dict(env)))
 
 
 Condition = Union[Atom, Equal, Constant, Not, And, Or, Exists, Forall]
 Env = Mapping[str, str]
-TRUE = Constant(True)
 
 
 @dataclass(frozen=True)
@@ -192,8 +192,11 @@ def bindings(variables: tuple[str, ...], condition: Condition, state: State, env
     """Values of `variables` (extending `env`) that may satisfy `condition`: every binding that does is
     among them. Positive facts of a conjunction narrow the search; the rest range over all objects, and a
     conjunct is tested as soon as its variables are bound, so a binding that fails it is not extended."""
-    checks = [(c.free, c.test) for c in conjuncts(condition)]
-    yield from _join(list(variables), positive_facts(condition), checks, state, dict(env))
+    yield from _join(list(variables), positive_facts(condition), _checks(condition), state, dict(env))
+
+
+def _checks(condition: Condition) -> list[tuple[frozenset[str], Test]]:
+    return [(c.free, c.test) for c in conjuncts(condition)]
 
 
 def positive_facts(condition: Condition) -> list[Atom]:
