@@ -18,14 +18,7 @@ from typing import Iterable, Iterator
 
 from cook2ltl import paths
 from cook2ltl.assembly.manifest import (
-    STAMP,
-    ModelEntry,
-    ModelSource,
-    ModelState,
-    checkpoint_digest,
-    load_manifest,
-    model_path,
-    state_of,
+    STAMP, ModelEntry, ModelSource, ModelState, checkpoint_digest, load_manifest, model_path, state_of,
 )
 from cook2ltl.errors import UserError
 from cook2ltl.parse.training import train as training

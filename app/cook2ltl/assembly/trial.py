@@ -14,13 +14,7 @@ from cook2ltl.assembly.planning import Plan, plan_json
 from cook2ltl.errors import UserError
 from cook2ltl.execution.executor import Kitchen
 from cook2ltl.execution.rollout import (
-    Rollout,
-    RolloutEvent,
-    RolloutFinished,
-    RolloutLimits,
-    Stop,
-    rollout,
-    rollout_json,
+    Rollout, RolloutEvent, RolloutFinished, RolloutLimits, Stop, rollout, rollout_json,
 )
 from cook2ltl.execution.tasks import GoalCheck, Task, check_goal, goal_json, preferred_objects, set_up, task_json
 from cook2ltl.formulas.formula import plan_element

@@ -41,13 +41,7 @@ def rollout_recipe(recipe: str, primitives: str, model: str, library: Path | Non
     from cook2ltl.assembly.translators import TranslateOptions
     from cook2ltl.cli.translating import open_translator, translated
     from cook2ltl.pipeline.world_rollout import (
-        NO_WORLD_HINT,
-        ActionRolled,
-        Began,
-        RecipeRolledOut,
-        StepRolled,
-        recipe_rollout_json,
-        roll_out_recipe,
+        NO_WORLD_HINT, ActionRolled, Began, RecipeRolledOut, StepRolled, recipe_rollout_json, roll_out_recipe,
     )
     from cook2ltl.reduce.primitives import load_primitives
 

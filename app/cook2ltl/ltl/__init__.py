@@ -9,24 +9,8 @@ from cook2ltl.ltl import order as _order
 from cook2ltl.ltl import progress as _progress
 from cook2ltl.ltl import simplify as _simplify
 from cook2ltl.ltl.ast import (
-    FALSE,
-    TRUE,
-    Always,
-    And,
-    Atom,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
-    holds_at_end,
+    FALSE, TRUE, Always, And, Atom, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release, StrongRelease,
+    Until, WeakNext, WeakUntil, holds_at_end,
 )
 from cook2ltl.ltl.limits import FormulaTooLarge
 from cook2ltl.ltl.parser import LTLSyntaxError, parse

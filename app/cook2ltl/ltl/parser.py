@@ -14,23 +14,8 @@ from lark import Lark, Token, Transformer, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from cook2ltl.ltl.ast import (
-    FALSE,
-    TRUE,
-    Always,
-    And,
-    Atom,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
+    FALSE, TRUE, Always, And, Atom, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release, StrongRelease,
+    Until, WeakNext, WeakUntil,
 )
 from cook2ltl.ltl.limits import MAX_FORMULA_CHARS, FormulaTooLarge
 

@@ -11,22 +11,8 @@ import re
 from dataclasses import dataclass
 
 from cook2ltl.ltl.ast import (
-    Always,
-    And,
-    Atom,
-    Constant,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
+    Always, And, Atom, Constant, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release, StrongRelease, Until,
+    WeakNext, WeakUntil,
 )
 from cook2ltl.ltl.limits import MAX_PRINTED_NODES, FormulaTooLarge
 

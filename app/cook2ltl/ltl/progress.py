@@ -31,26 +31,8 @@ from dataclasses import dataclass
 from enum import Enum
 
 from cook2ltl.ltl.ast import (
-    FALSE,
-    TRUE,
-    Always,
-    And,
-    Atom,
-    Constant,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
-    holds_at_end,
-    negate,
+    FALSE, TRUE, Always, And, Atom, Constant, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release,
+    StrongRelease, Until, WeakNext, WeakUntil, holds_at_end, negate,
 )
 from cook2ltl.ltl.limits import WorkLimit
 from cook2ltl.ltl.simplify import EMPTY, NONEMPTY, and_, equiv_, or_

@@ -18,26 +18,8 @@ from __future__ import annotations
 from functools import lru_cache
 
 from cook2ltl.ltl.ast import (
-    FALSE,
-    TRUE,
-    Always,
-    And,
-    Atom,
-    Constant,
-    Equiv,
-    Eventually,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    StrongRelease,
-    Until,
-    WeakNext,
-    WeakUntil,
-    holds_at_end,
-    postorder,
+    FALSE, TRUE, Always, And, Atom, Constant, Equiv, Eventually, Formula, Implies, Next, Not, Or, Release,
+    StrongRelease, Until, WeakNext, WeakUntil, holds_at_end, postorder,
 )
 from cook2ltl.ltl.limits import WorkLimit, charge
 

@@ -25,14 +25,7 @@ from typing import Iterator
 from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.domain.recipe import ParsedRecipe
 from cook2ltl.formulas.formula import (
-    ELAPSED,
-    Part,
-    alternatives,
-    check,
-    direct_calls,
-    direct_element,
-    plan_element,
-    step_element,
+    ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
 from cook2ltl.library.store import Library
 from cook2ltl.ltl.ast import Formula
@@ -40,17 +33,8 @@ from cook2ltl.ltl.patterns import Element, sequenced_visit
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.parse.recipe import parse_recipe
 from cook2ltl.pipeline.records import (
-    ActionDone,
-    ActionResult,
-    Parsed,
-    Stats,
-    StepDone,
-    StepResult,
-    Translation,
-    TranslationEvent,
-    TranslationFinished,
-    TranslationStarted,
-    Variant,
+    ActionDone, ActionResult, Parsed, Stats, StepDone, StepResult, Translation, TranslationEvent,
+    TranslationFinished, TranslationStarted, Variant,
 )
 from cook2ltl.reduce.action import actions_of, known_objects
 from cook2ltl.reduce.body import instantiate, parametrize, placeholders

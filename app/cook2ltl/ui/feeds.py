@@ -17,22 +17,9 @@ from textual.message import Message
 from cook2ltl.domain.settings import TranslateSettings
 from cook2ltl.reduce.llm import GenerationCancelled
 from cook2ltl.ui.messages import (
-    ActionReduced,
-    ObjectState,
-    RecipeActionRolled,
-    RecipeParsed,
-    RecipeRolloutBegan,
-    RecipeRolloutDone,
-    RecipeStepRolled,
-    RolloutBegan,
-    RolloutDone,
-    RolloutRefused,
-    RolloutStepped,
-    StepTranslated,
-    TranslationDone,
-    WorkNotice,
-    WorkProgress,
-    WorkStopped,
+    ActionReduced, ObjectState, RecipeActionRolled, RecipeParsed, RecipeRolloutBegan, RecipeRolloutDone,
+    RecipeStepRolled, RolloutBegan, RolloutDone, RolloutRefused, RolloutStepped, StepTranslated, TranslationDone,
+    WorkNotice, WorkProgress, WorkStopped,
 )
 from cook2ltl.ui.services import Services
 

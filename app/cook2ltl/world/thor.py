@@ -29,15 +29,7 @@ from cook2ltl.thor_types import TypeRules
 from cook2ltl.world.logic import Fact, State
 from cook2ltl.world.thor_facts import PREDICATES
 from cook2ltl.world.thor_names import (
-    Binding,
-    Obj,
-    key,
-    known_types,
-    objects_named,
-    piece_types,
-    shut_away,
-    snake_case,
-    types_for,
+    Binding, Obj, key, known_types, objects_named, piece_types, shut_away, snake_case, types_for,
 )
 from cook2ltl.world.world import kept_facts
 

@@ -15,16 +15,7 @@ from dataclasses import dataclass, field
 from cook2ltl.domain.actions import TIMER, Call
 from cook2ltl.world.explain import why_not
 from cook2ltl.world.logic import (
-    Fact,
-    State,
-    applicable,
-    bindings,
-    effects_of,
-    ground,
-    holds,
-    match_atom,
-    positive_facts,
-    successor,
+    Fact, State, applicable, bindings, effects_of, ground, holds, match_atom, positive_facts, successor,
 )
 from cook2ltl.world.pddl import Domain
 

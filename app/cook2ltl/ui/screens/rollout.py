@@ -21,14 +21,8 @@ from cook2ltl.text_safety import literal, visible
 from cook2ltl.ui.feeds import RecipeRolloutRequest, RolloutRequest, TranslateRequest, recipe_rollout_feed, rollout_feed
 from cook2ltl.ui.literal import shown
 from cook2ltl.ui.messages import (
-    RecipeActionRolled,
-    RecipeRolloutBegan,
-    RecipeRolloutDone,
-    RecipeStepRolled,
-    RolloutBegan,
-    RolloutDone,
-    RolloutRefused,
-    RolloutStepped,
+    RecipeActionRolled, RecipeRolloutBegan, RecipeRolloutDone, RecipeStepRolled, RolloutBegan, RolloutDone,
+    RolloutRefused, RolloutStepped,
 )
 from cook2ltl.ui.screens.base import WorkScreen
 from cook2ltl.ui.screens.dialogs import PathDialog

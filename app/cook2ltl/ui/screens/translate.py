@@ -10,16 +10,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import (
-    Button,
-    Checkbox,
-    DataTable,
-    Footer,
-    Header,
-    Select,
-    Static,
-    TabbedContent,
-    TabPane,
-    TextArea,
+    Button, Checkbox, DataTable, Footer, Header, Select, Static, TabbedContent, TabPane, TextArea,
 )
 from textual.worker import get_current_worker
 
