@@ -29,6 +29,7 @@ class TranslateOptions:
     repairs: int | None = None  # times a plan the kitchen refuses goes back to the model; None: the settings'
     approved_only: bool = False  # lab mode: reuse approved library entries only
     ground: bool = True  # decode, check and complete every plan in the primitive set's world model
+    reuse: bool = True  # reuse a library entry across verbs of one table row and signatures (False: exact keys)
 
 
 def checks_in_kitchen(primitives: PrimitiveSet, check: bool | None, variant: Variant, grounded: bool,
@@ -57,7 +58,7 @@ def build_translator(primitives: PrimitiveSet, model: LanguageModel, library: Li
     repairs = load_settings().translate.repairs if options.repairs is None else options.repairs
     return Translator(primitives, model, library if options.variant == Variant.AR_LIBRARY else None,
                       options.variant, options.settings, kitchen_check(primitives) if checking else None, repairs,
-                      options.approved_only, world)
+                      options.approved_only, world, options.reuse)
 
 
 @contextmanager

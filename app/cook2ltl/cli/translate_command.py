@@ -40,6 +40,9 @@ def translate_command(
                                      "and let the planner complete it to the action's intended effect."),
     approved_only: bool = typer.Option(False, "--approved-only",
                                        help="Reuse only approved library entries (new ones are still cached, pending)."),
+    exact_keys: bool = typer.Option(False, "--exact-keys",
+                                    help="Reuse a library entry only for its own verb and signature, not for a verb "
+                                         "the verb-effect table reads as the same action or another signature."),
     as_json: bool = typer.Option(False, "--json", help="Print machine-readable JSON."),
     pddl: Optional[Path] = typer.Option(None, "--pddl", help="Also write the world model's domain, the problem "
                                         "and the plan as PDDL into this folder."),
@@ -57,7 +60,8 @@ def translate_command(
     pddl = paths.output_folder(pddl, "--pddl") if pddl else None  # made now: a bad folder fails before the run
     text = read_recipe(recipe)
     errors = terminal(stderr=True)
-    options = TranslateOptions(variant, ReductionSettings(max_lines, comments), validate, repairs, approved_only, ground)
+    options = TranslateOptions(variant, ReductionSettings(max_lines, comments), validate, repairs, approved_only,
+                               ground, reuse=not exact_keys)
     with open_translator(load_primitives(primitives), model, library, options, errors) as translator:
         translation = translated(text, translator, errors)
     if pddl is not None:

@@ -5,12 +5,16 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import TYPE_CHECKING
 
 from cook2ltl.domain.actions import Call, Reduction
 from cook2ltl.domain.recipe import ParsedRecipe, Step
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.reduce.validation import CheckStatus, Validation
 from cook2ltl.world.check import PlanCheck
+
+if TYPE_CHECKING:  # a type only: the records load without the library (sqlite_utils)
+    from cook2ltl.library.reuse import Reuse
 
 
 class Variant(StrEnum):
@@ -31,6 +35,7 @@ class ActionResult:
     entry_validation: CheckStatus | None = None
     entry_problems: tuple[str, ...] = ()
     check: PlanCheck | None = None  # the plan in the world model, where the recipe's earlier steps left it
+    reuse: Reuse | None = None  # a library hit learnt for another verb or signature: which entry, and why
 
 
 @dataclass(frozen=True)
@@ -46,6 +51,7 @@ class Stats:
     actions: int = 0
     primitive: int = 0
     library_hits: int = 0
+    cross_reuses: int = 0  # of the library hits, entries learnt for another verb or signature (library.reuse)
     no_plan_hits: int = 0  # of the library hits, entries recording that the model wrote no admissible plan
     llm_calls: int = 0
     prompt_tokens: int = 0

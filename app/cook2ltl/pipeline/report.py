@@ -32,7 +32,8 @@ def show(translation: Translation, console: Console) -> None:
             console.print(styled("      ", ("!", "bold red"), " ", problem), highlight=False)
     stats = translation.stats
     console.print(literal(
-        f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} from the library, "
+        f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} from the library"
+        f"{f' ({stats.cross_reuses} reused across verbs or signatures)' if stats.cross_reuses else ''}, "
         f"{stats.llm_calls} LLM calls ({stats.prompt_tokens} prompt + {stats.completion_tokens} completion tokens, "
         f"{stats.llm_seconds:.1f} s); {stats.new_entries} new library entries; {stats.seconds:.1f} s in all", "dim"))
     console.print(literal(rates_line(translation), "dim"), highlight=False, soft_wrap=True)
@@ -54,6 +55,9 @@ def _show_reduction(result, console: Console) -> None:
     entry = f" #{reduction.entry_id}" if reduction.entry_id is not None else ""
     console.print(styled("        → ", (reduction.action.text(), "bold"),
                          (f"  {reduction.source.value}{entry}", SOURCE_STYLE[reduction.source])))
+    if result.reuse is not None:
+        console.print(literal(f"            reused: {result.reuse.text()}", SOURCE_STYLE[Source.LIBRARY]),
+                      highlight=False, soft_wrap=True)
     if reduction.source != Source.PRIMITIVE:
         for call in reduction.body:
             console.print(literal(f"            {call.text()}"), highlight=False)

@@ -50,6 +50,8 @@ def action_json(result: ActionResult) -> dict:
         "library_entry": reduction.entry_id,
         "usage": asdict(reduction.usage),
         "check": result.check.json() if result.check is not None else None,
+        # a library entry learnt for another verb or signature: which one, and why it serves (library.reuse)
+        "reused": result.reuse.json() if result.reuse is not None else None,
     }
 
 

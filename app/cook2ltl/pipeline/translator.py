@@ -13,6 +13,10 @@ was checked when it was learnt and carries that result, and reuse must stay a lo
 a lab that wants only reviewed plans sets `approved_only`. A reduction with no admissible plan is cached too,
 as an entry with an empty body: the action is then not sent to the model again (until a reviewer rejects
 the entry), and the lab sees which body to write.
+
+An action whose exact key (verb, signature) has no usable entry may be served by an entry learnt for a verb the
+verb-effect table reads as the same action, or for another signature (`library.reuse`; `reuse` False: exact
+keys only). It is a library hit that says where it came from, and nothing is learnt under the new key.
 """
 
 from __future__ import annotations
@@ -27,7 +31,8 @@ from cook2ltl.domain.recipe import ParsedRecipe
 from cook2ltl.formulas.formula import (
     ELAPSED, Part, alternatives, check, direct_calls, direct_element, plan_element, step_element,
 )
-from cook2ltl.library.store import Library
+from cook2ltl.library.reuse import Fit, reuses
+from cook2ltl.library.store import Library, LibraryEntry
 from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.patterns import Element, sequenced_visit
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
@@ -45,7 +50,7 @@ from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, of
 from cook2ltl.reduce.repair import Checked, reduce_checked
 from cook2ltl.reduce.validation import CheckStatus, LineProblem, PlanValidator, RecipeSoFar, Validation
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
-from cook2ltl.world.effects import cast, template_text
+from cook2ltl.world.effects import cast, table_effect, template_text
 from cook2ltl.world.planner import all_reached
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
@@ -62,6 +67,7 @@ class Translator:
     repairs: int = 2  # how many times a plan that fails the check is written again
     approved_only: bool = False  # lab mode: reuse approved library entries only
     grounding: Grounding | None = None  # the world model every plan is checked and completed in (None: off)
+    reuse: bool = True  # reuse an entry across verbs of one table row and across signatures (False: exact keys)
 
 
 def run(text: str, spans: SpanExtractor, dependencies: DependencyParser, translator: Translator,
@@ -167,18 +173,23 @@ class _Run:
                                     entry_problems=entry.problems), None
             body = instantiate(entry.body, placeholders(action)) if entry else None
             plan = self._expand(body) if body is not None else None
-            if plan:
-                effect = self._effect(action, entry.effect)
+            stale = entry.id if entry and not plan else None  # written for another version of the primitive set
+            found = self._reusable(action, entry) if not plan and self.t.reuse else None
+            reuse = None
+            if found is not None:  # learnt for another verb or signature: shown with why it serves
+                fit, plan = found
+                entry, body, reuse = fit.entry, fit.body, fit.reuse
+            if plan:  # a reuse is held to the action's own effect where the table knows it, else to the entry's
+                effect = self._effect(action, None if reuse and table_effect(action.verb) is not None else entry.effect)
                 if done := self._needless(frame_index, action, effect):
                     return done, None
-                self._count(library_hits=1)
+                self._count(library_hits=1, cross_reuses=int(reuse is not None))
                 grounded = self._ground(action, plan, "library", effect)
                 plan = grounded.plan if grounded else plan
                 reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
                 result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
-                                      entry_problems=entry.problems, check=grounded)
+                                      entry_problems=entry.problems, check=grounded, reuse=reuse)
                 return result, plan_element(plan, primitives) if plan else None
-            stale = entry.id if entry else None  # written for another version of the primitive set
         in_world = (self.t.grounding is not None and hasattr(self.t.model, "complete_lines")
                     and not self.t.settings.comments)  # the line grammar has no comment lines
         effect = self._effect(action)
@@ -206,6 +217,16 @@ class _Run:
             reduction = replace(reduction, entry_id=self._learn(action, learnt, plan, validation, stale).entry_id)
         result = ActionResult(frame_index, reduction, plan, validation, checked.failed, check=grounded)
         return result, plan_element(plan, primitives) if plan else None
+
+    def _reusable(self, action: Action, exact: LibraryEntry | None) -> tuple[Fit, tuple[Call, ...]] | None:
+        """The best entry of another verb or signature that serves `action` (`library.reuse`), with its plan down
+        to primitives; None when none does. The exact key's own entry (stale here) is not tried again."""
+        entries = self.t.library.live(self.t.primitives.name, self.t.approved_only)
+        for fit in reuses(action, (e for e in entries if exact is None or e.id != exact.id), self.t.approved_only):
+            plan = self._expand(fit.body)
+            if plan:
+                return fit, plan
+        return None
 
     def _reduce_in_world(self, action: Action, effect: tuple) -> Checked:
         """State-aware decoding: every line the model writes can be applied where the recipe has got to."""
