@@ -37,7 +37,7 @@ ODD_STRINGS = ("", " ", "~", "~/", "~no_such_user_here/x", "/dev/zero", "/dev/st
 SPECIAL_NUMBERS = (0, 1, -1, 2, 10, 11, 2**63 - 1, -(2**63), 10**30, 0.5, 1.0, -0.0, 1e300, -1e300, 5e-324,
                    math.inf, -math.inf, math.nan, 100_000, 100_001, 10_000_000, 10_000_001, 3600, 3600.5)
 SETTING_KEYS = ("ner", "limits", "translate", "keymap", "checkpoint", "threshold", "labels", "recipe_bytes", "steps",
-                "llm_seconds", "primitives", "repairs", "ground", "VERB", "what", "TEMP", "translate.run")
+                "llm_seconds", "primitives", "repairs", "ground", "reuse", "VERB", "what", "TEMP", "translate.run")
 SET_KEYS = ("name", "examples", "objects", "states", "primitives", "world", "domain", "kitchen", "kit", "planner",
             "liquids", "put", "wait", "pick_up", "what", "where", "condition", "boiled", "*")
 
@@ -116,7 +116,7 @@ settings_files = st.one_of(
         "ner": or_not_a_table(table_of(("checkpoint", "threshold", "labels")).map(with_labels)),
         "limits": or_not_a_table(table_of(("recipe_bytes", "steps", "llm_seconds"),
                                           st.sampled_from(SPECIAL_NUMBERS) | values)),
-        "translate": or_not_a_table(table_of(("primitives", "repairs", "ground"))),
+        "translate": or_not_a_table(table_of(("primitives", "repairs", "ground", "reuse"))),
         "keymap": or_not_a_table(st.dictionaries(names, names | values, max_size=4)),
     }),
     tables(SETTING_KEYS),
@@ -176,6 +176,7 @@ def test_any_settings_file_gives_bounded_settings_or_a_user_error(document):
     assert type(limits.llm_seconds) is float and 1 <= limits.llm_seconds <= 3600
     assert type(ner.threshold) is float and 0 <= ner.threshold <= 1
     assert type(translate.repairs) is int and 0 <= translate.repairs <= 10 and type(translate.ground) is bool
+    assert type(translate.reuse) is bool
     assert all(isinstance(label, Label) and isinstance(name, str) for label, name in ner.labels.items())
     assert all(isinstance(path, Path) for path in translate.primitives)
     assert all(isinstance(k, str) and isinstance(v, str) for k, v in settings.keymap.items())

@@ -55,7 +55,7 @@ def refused(tmp_path: Path, content: str) -> str:
     ("pages = 3", "unknown key pages (the file has ner, limits, translate, keymap)"),
     ("[limits]\npages = 3", "unknown key [limits] pages ([limits] has recipe_bytes, steps, llm_seconds)"),
     ("[ner]\nthreshhold = 0.4", "unknown key [ner] threshhold ([ner] has checkpoint, threshold, labels)"),
-    ("[translate]\nrepair = 1", "unknown key [translate] repair ([translate] has primitives, repairs, ground)"),
+    ("[translate]\nrepair = 1", "unknown key [translate] repair ([translate] has primitives, repairs, ground, reuse)"),
 ])
 def test_a_wrong_setting_names_the_file_the_key_and_what_it_must_be(tmp_path, content, expected):
     assert expected in refused(tmp_path, content)
@@ -86,19 +86,19 @@ def test_a_good_file_gives_typed_values_and_home_relative_paths(tmp_path, monkey
     config = tmp_path / "settings.toml"
     config.write_text('[ner]\ncheckpoint = "~/gliner"\nthreshold = 1\n[ner.labels]\nverb = "action"\n'
                       '[limits]\nrecipe_bytes = 5000\nllm_seconds = 30\n'
-                      '[translate]\nprimitives = ["~/arm.toml"]\nrepairs = 0\nground = false\n'
+                      '[translate]\nprimitives = ["~/arm.toml"]\nrepairs = 0\nground = false\nreuse = false\n'
                       '[keymap]\n"translate.run" = "f5"\n')
     settings = load_settings(config)
     assert settings.ner == NerSettings(tmp_path / "gliner", {Label.VERB: "action"}, 1.0)
     assert settings.limits == Limits(recipe_bytes=5000, steps=500, llm_seconds=30.0)
     assert type(settings.limits.llm_seconds) is float and type(settings.ner.threshold) is float
-    assert settings.translate == TranslateSettings((tmp_path / "arm.toml",), 0, False)
+    assert settings.translate == TranslateSettings((tmp_path / "arm.toml",), 0, False, reuse=False)
     assert settings.keymap == {"translate.run": "f5"} and settings.source == config
 
 
 def test_the_settings_api_is_unchanged():
     """What other modules build and replace: plain frozen dataclasses with class-level defaults."""
-    assert TranslateSettings.repairs == 2 and TranslateSettings.ground is True
+    assert TranslateSettings.repairs == 2 and TranslateSettings.ground is True and TranslateSettings.reuse is True
     assert Settings().limits == Limits() and Limits(recipe_bytes=10, steps=5).steps == 5
     replaced = dataclasses.replace(Settings(), ner=dataclasses.replace(NerSettings(), checkpoint=Path("/x")))
     assert replaced.ner.checkpoint == Path("/x")

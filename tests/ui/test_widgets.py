@@ -47,3 +47,20 @@ def test_a_formula_too_large_to_print_is_noted_not_drawn(monkeypatch):
     monkeypatch.setattr(printer, "MAX_PRINTED_NODES", 3)
     assert formula_text(formula) is None and formula_text(formula, spot=True) is None
     assert shown_formula(formula).plain == "(too large to show)"
+
+
+def test_a_reused_entry_says_where_it_came_from():
+    """A library hit learnt for another verb or signature is marked reused, and its detail names the entry and why."""
+    from cook2ltl.domain.actions import Action, Call, Parameter, Reduction, Source
+    from cook2ltl.library.reuse import Reuse
+    from cook2ltl.pipeline.records import ActionResult
+    from cook2ltl.ui.widgets.reductions import reduction_label, result_detail
+
+    action = Action("stir_in", (Parameter("what", "the sugar", "sugar", "sugar"),))
+    plan = (Call("stir", ("sugar",)),)
+    cached = ActionResult(0, Reduction(action, plan, Source.LIBRARY, entry_id=3), plan)
+    reused = ActionResult(0, Reduction(action, plan, Source.LIBRARY, entry_id=3), plan,
+                          reuse=Reuse(3, "stir", ("what",), ("the verb-effect table reads stir_in as stir",)))
+    assert reduction_label(cached).plain == "cached #3" and reduction_label(reused).plain == "reused #3"
+    assert "reused entry 3 stir(what): the verb-effect table reads stir_in as stir" in result_detail(reused).plain
+    assert "reused" not in result_detail(cached).plain

@@ -106,8 +106,10 @@ def parse_all(recipes: list[tuple[str, str]]) -> Stage:
 
 
 def library_bound(stage: Stage, primitives) -> dict:
-    """What bounds AR+𝔸's calls: the library is keyed by verb and signature, so every distinct key among the
-    actions that are not passed through as primitives costs at least one call, however good the model."""
+    """What bounds AR+𝔸's calls with exact keys: the library is keyed by verb and signature, so every distinct key
+    among the actions that are not passed through as primitives costs at least one call, however good the model.
+    Reusing an entry across verbs the verb-effect table reads as one action and across signatures (the default,
+    `library.reuse`) can go below it."""
 
     actions = [a for recipe in stage.recipes for step in recipe.steps for frame in step.frames
                for a in actions_of(frame)]
@@ -146,7 +148,8 @@ def run_variant(stage: Stage, translator: Translator, progress: Callable[[dict],
         for key, value in vars(translation.stats).items():
             totals[key] = totals.get(key, 0) + value
         per_recipe.append({"recipe": number, "actions": translation.stats.actions,
-                           "llm_calls": translation.stats.llm_calls, "seconds": round(translation.stats.seconds, 3)})
+                           "llm_calls": translation.stats.llm_calls, "cross_reuses": translation.stats.cross_reuses,
+                           "seconds": round(translation.stats.seconds, 3)})
         progress(_summary(totals, translations, stage) | {"per_recipe": per_recipe})
     return _summary(totals, translations, stage) | {"per_recipe": per_recipe}
 
@@ -319,8 +322,9 @@ def bound_note(bound: dict) -> str:
     keys, reduced, actions = bound["distinct_keys"], bound["reduced_by_ar"], bound["actions"]
     return (f"\nThe library is keyed by verb and signature: of {actions} actions, {bound['primitive']} pass through "
             f"as primitives and {reduced} reach the library with {keys} distinct keys ({bound['distinct_verbs']} "
-            f"verbs), so AR+𝔸 needs at least {keys} calls: {keys / reduced:.2f} × AR, "
-            f"{keys / actions:.2f} × AR*.\n")
+            f"verbs), so with exact keys alone AR+𝔸 needs at least {keys} calls: {keys / reduced:.2f} × AR, "
+            f"{keys / actions:.2f} × AR*. Reusing an entry across verbs the verb-effect table reads as one action "
+            f"and across signatures (the default; `translate --exact-keys` turns it off) can go below it.\n")
 
 
 def _ratios(groups: dict[tuple[str, str], list[dict]], total: int) -> str:

@@ -14,6 +14,7 @@
     primitives = ["~/robot/primitives.toml"]   # your robots' primitive sets, offered beside recipe and ai2thor
     repairs = 2                                # times a plan the kitchen refuses goes back to the model
     ground = true                              # plans decoded, checked and completed in the world model
+    reuse = true                               # library entries reused across verbs of one table row and signatures
     [keymap]                                   # the app's keys: binding id = keys (a wrong id is named)
     "translate.run" = "ctrl+enter"
     "library.approve" = "y,a"
@@ -51,6 +52,7 @@ class TranslateSettings:
     primitives: tuple[Path, ...] = ()  # TOML primitive sets beside the built-in ones
     repairs: int = 2
     ground: bool = True  # check and complete every plan in the primitive set's world model
+    reuse: bool = True  # reuse a library entry across verbs the verb-effect table reads as one, and signatures
 
 
 @dataclass(frozen=True)

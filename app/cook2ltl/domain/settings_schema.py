@@ -38,6 +38,7 @@ class TranslateTable(Table):
                                        description=f"a list of at most {MAX_PRIMITIVE_SETS} primitive-set files")
     repairs: int = whole_number(TranslateSettings.repairs, 0, 10)
     ground: bool = flag(TranslateSettings.ground)
+    reuse: bool = flag(TranslateSettings.reuse)
 
 
 class SettingsFile(Table):
@@ -57,5 +58,6 @@ def settings_from(raw: dict, path: Path) -> Settings:
                         {Label(name.upper()): text for name, text in ner.labels.items()}, ner.threshold),
         limits=Limits(**file.limits.model_dump()),
         translate=TranslateSettings(tuple(user_path(item, f"{shown(path)}: [translate] primitives")
-                                          for item in translate.primitives), translate.repairs, translate.ground),
+                                          for item in translate.primitives), translate.repairs, translate.ground,
+                                      translate.reuse),
         keymap=dict(file.keymap), source=path)

@@ -39,6 +39,7 @@ class TranslateRequest:
     approved_only: bool = False  # lab mode: reuse approved library entries only
     repairs: int = TranslateSettings.repairs  # times a plan the kitchen refuses goes back to the model
     ground: bool = TranslateSettings.ground  # plans decoded, checked and completed in the world model
+    reuse: bool = TranslateSettings.reuse  # library entries reused across verbs of one table row and signatures
 
 
 @dataclass(frozen=True)
@@ -86,7 +87,7 @@ def _translating(services: Services, request: TranslateRequest, cancel: threadin
     library = services.library() if variant == Variant.AR_LIBRARY else None
     # The check box turns the kitchen check off; on, it checks where the rule says it helps, as the CLI does.
     options = TranslateOptions(variant, check=None if request.validate else False, repairs=request.repairs,
-                               approved_only=request.approved_only, ground=request.ground)
+                               approved_only=request.approved_only, ground=request.ground, reuse=request.reuse)
     notices: list[str] = []
     translator = build_translator(primitives, services.model(request.model, cancel), library, options,
                                   services.validator, notices.append)

@@ -115,7 +115,8 @@ class TranslateScreen(WorkScreen):
                                    "AR+A" if chosen == LAB_MODE else chosen, self.query_one("#model", Select).value,
                                    self.query_one("#validate", Checkbox).value, approved_only=chosen == LAB_MODE,
                                    repairs=self.app.translate_settings.repairs,
-                                   ground=self.app.translate_settings.ground)
+                                   ground=self.app.translate_settings.ground,
+                                   reuse=self.app.translate_settings.reuse)
         self.query_one(StepsView).update("parsing …")
         self.query_one(ReductionsTable).clear()
         self.query_one("#reduction-summary", Static).update("")

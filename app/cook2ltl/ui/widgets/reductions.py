@@ -1,6 +1,7 @@
 """The reductions of a translation as a table, one row per action in the pipeline's order: pending until
-reduced, then primitive, cached (found in the library) or new (written by the model now, with its time and
-its kitchen check), with its plan; and the chosen row in full below it."""
+reduced, then primitive, cached (found in the library), reused (a library entry learnt for a verb the table reads
+as the same action, or for another signature) or new (written by the model now, with its time and its kitchen
+check), with its plan; and the chosen row in full below it, a reuse with where it came from and why."""
 
 from __future__ import annotations
 
@@ -78,7 +79,7 @@ def reduction_label(result: ActionResult) -> Content:
     if reduction.source.value == "primitive":
         return _muted("primitive")
     if reduction.source.value == "library":
-        return Content(f"cached{entry}").stylize("$text-success")
+        return Content(f"{'reused' if result.reuse else 'cached'}{entry}").stylize("$text-success")
     repairs = f" +{len(result.attempts)} rep." if result.attempts else ""
     return Content(f"new{entry}{repairs}").stylize("$text-warning")
 
@@ -89,6 +90,8 @@ def result_detail(result: ActionResult | None) -> Content:
         return Content("")
     reduction = result.reduction
     lines = [shown(reduction.action.text()).stylize("bold") + shown(f" · {reduction.source.value}")]
+    if result.reuse is not None:
+        lines.append(shown(f"reused {result.reuse.text()}").stylize("$text-success"))
     lines += [shown(f"  {call.text()}") for call in result.plan or reduction.body]
     lines += [shown(f"  ✗ {line} (not admissible, dropped)").stylize("$text-error") for line in reduction.dropped]
     check = result.validation
@@ -107,7 +110,8 @@ def summary(translation: Translation) -> Content:
     stats: Stats = translation.stats
     skipped = [shown(f"! {reason}").stylize("$text-warning") for reason in translation.skipped_verbs]
     return Content("\n").join([*skipped, shown(
-        f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} cached, "
+        f"{stats.actions} actions: {stats.primitive} primitive, {stats.library_hits} cached"
+        f"{f' ({stats.cross_reuses} reused across verbs or signatures)' if stats.cross_reuses else ''}, "
         f"{stats.llm_calls} by the model ({stats.llm_seconds:.1f} s LLM time, {stats.new_entries} new library "
         f"entries pending review); {stats.seconds:.1f} s in all\n{rates_line(translation)}")])
 
