@@ -230,8 +230,8 @@ class _Run:
 
     def _reduce_in_world(self, action: Action, effect: tuple) -> Checked:
         """State-aware decoding: every line the model writes can be applied where the recipe has got to."""
-        reduction = reduce_in_world(action, self.t.primitives, [v.verb for v in self.verbs], self.t.model,
-                                    self.t.settings, self.t.grounding.world, self.world_state, effect)
+        reduction = reduce_in_world(action, self.t.primitives, self.t.model, self.t.settings, self.t.grounding,
+                                    self.world_state, effect)
         return Checked(reduction, reduction.body, None)
 
     def start(self, parsed: ParsedRecipe) -> None:

@@ -9,42 +9,42 @@ completes (`world.check`).
 
 from __future__ import annotations
 
+import time
 from collections.abc import Sequence
+from dataclasses import replace
 
-from cook2ltl.domain.actions import Action, PrimitiveSet, Reduction, Source
+from cook2ltl.domain.actions import Action, Call, PrimitiveSet, Reduction, Source
 from cook2ltl.reduce.body import read_body
 from cook2ltl.reduce.grammar import vocabulary
 from cook2ltl.reduce.llm import LanguageModel
 from cook2ltl.reduce.prompt import build_prompt
 from cook2ltl.reduce.reduction import TOKENS_PER_LINE, ReductionSettings
 from cook2ltl.world.affordances import admissible_calls
+from cook2ltl.world.check import Grounding
 from cook2ltl.world.logic import Fact, State
-from cook2ltl.world.planner import all_reached
+from cook2ltl.world.planner import HOLDING, all_reached
 from cook2ltl.world.world import World
 
-REPEATS = 2  # the same line this many times in a row ends the plan: a greedy model is looping
+SLACK = 3  # lines a model's plan may take beyond the planner's way: more is wandering, and the planner completes
 
 
-def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Sequence[str], model: LanguageModel,
-                    settings: ReductionSettings, world: World, state: State, effect: Sequence[Fact]) -> Reduction:
+def reduce_in_world(action: Action, primitives: PrimitiveSet, model: LanguageModel, settings: ReductionSettings,
+                    grounding: Grounding, state: State, effect: Sequence[Fact]) -> Reduction:
+    world = grounding.world
     vocab = vocabulary(primitives, (), action)
-    prompt = build_prompt(primitives, library_verbs, action, comments=False)
-
-    applied: list = []  # the lines applied so far, and the state they reached: each line is applied once
-    now = state
+    started = time.perf_counter()
+    objects, most_lines = _focus(vocab.objects, action, grounding, state, effect, settings.max_lines)
+    planning = time.perf_counter() - started
+    # No library verbs: the line grammar offers primitives only, so listing them would be read for nothing.
+    prompt = build_prompt(primitives, (), action, comments=False)
 
     def next_lines(text: str) -> list[str] | None:
-        nonlocal now
-        calls, _ = read_body(text)
-        if len(calls) >= settings.max_lines or _looping(calls):
-            return None
-        if calls[:len(applied)] != applied:  # the text was not just extended: start from the action's state
-            applied.clear()
-            now = state
-        for call in calls[len(applied):]:
-            now = world.apply(now, call).state
-            applied.append(call)
-        options = admissible_calls(world, now, primitives, vocab.objects, vocab.states, vocab.durations)
+        written, _ = read_body(text)
+        calls, went_through = _path(world, state, written)
+        if len(calls) < len(written) or len(calls) >= most_lines:
+            return None  # the model went back to where it had been (it is looping), or wrote all a plan may take
+        now = went_through[-1]
+        options = admissible_calls(world, now, primitives, objects, vocab.states, vocab.durations)
         if effect and all_reached(now, effect):  # only tidying up now: lines that undo a change, keeping the effect
             changed = len(now.facts ^ state.facts)
             options = [call for call in options if _tidies(world.apply(now, call).state, state, changed, effect)]
@@ -52,7 +52,37 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, library_verbs: Seq
 
     completion = model.complete_lines(prompt.static, prompt.dynamic, next_lines, TOKENS_PER_LINE)
     calls, unread = read_body(completion.text)
-    return Reduction(action, calls, Source.LLM, completion.usage, unread, prompt.digest)
+    usage = replace(completion.usage, choice_seconds=completion.usage.choice_seconds + planning)  # the world's time
+    return Reduction(action, _path(world, state, calls)[0], Source.LLM, usage, unread, prompt.digest)
+
+
+def _path(world: World, state: State, calls: Sequence[Call]) -> tuple[tuple[Call, ...], list[State]]:
+    """The lines up to the first that brings the kitchen back to a state the plan has been in (a detour, a
+    loop, a line that changes nothing), and the states they go through."""
+    went_through = [state]
+    for count, call in enumerate(calls):
+        after = world.apply(went_through[-1], call).state
+        if any(after.facts == visited.facts for visited in went_through):
+            return tuple(calls[:count]), went_through
+        went_through.append(after)
+    return tuple(calls), went_through
+
+
+def _focus(objects: Sequence[str], action: Action, grounding: Grounding, state: State, effect: Sequence[Fact],
+           max_lines: int) -> tuple[Sequence[str], int]:
+    """The objects a line may name, and how many lines a plan may take. When the planner knows a way to the
+    effect: the action's own objects, the effect's, what is in hand, the kitchen's everyday things for this
+    effect (the planner's kit) and whatever that way uses, in at most SLACK lines more than it takes. A line
+    about anything else (switching the toaster on to boil pasta) is wandering the world model can tell. Without
+    an effect, a kit or a way: every object, `max_lines` lines."""
+    planner = grounding.planner
+    kit = planner.kit_for(effect) if effect and planner is not None else None
+    way = planner.plan(grounding.world, state, effect) if kit is not None else None
+    if way is None:
+        return objects, max_lines
+    wanted = {*action.objects, *(arg for fact in effect for arg in fact[1:]), *kit,
+              *(arg for call in way for arg in call.args), *(fact[1] for fact in state.by_predicate.get(HOLDING, ()))}
+    return [name for name in objects if name in wanted], min(max_lines, len(way) + SLACK)
 
 
 def _tidies(after: State, start: State, changed: int, effect: Sequence[Fact]) -> bool:
@@ -61,6 +91,3 @@ def _tidies(after: State, start: State, changed: int, effect: Sequence[Fact]) ->
     return len(after.facts ^ start.facts) < changed and all_reached(after, effect)
 
 
-
-def _looping(calls) -> bool:
-    return len(calls) >= REPEATS and len(set(calls[-REPEATS:])) == 1

@@ -17,7 +17,11 @@ from cook2ltl.world.world import World
 
 def admissible_calls(world: World, state: State, primitives: PrimitiveSet, objects: Iterable[str],
                      states: Iterable[str], durations: Iterable[str]) -> list[Call]:
-    named = State(tuple(o for o in dict.fromkeys(objects) if o in set(state.objects)), state.facts)
+    present = set(state.objects)
+    names = tuple(o for o in dict.fromkeys(objects) if o in present)
+    # Bindings are drawn from the facts too: only those about named objects, or a line could name any object.
+    kept = set(names)
+    named = State(names, frozenset(f for f in state.facts if all(a in kept for a in f[1:])))
     calls: list[Call] = []
     for primitive in primitives.primitives:
         if primitive.params == (CONDITION,):

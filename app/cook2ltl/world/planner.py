@@ -24,12 +24,16 @@ ENGINE = "fast-downward"
 # can take minutes, so it gets a second.
 ENGINE_OPTIONS = {"fast_downward_translate_options": ["--invariant-generation-max-time", "1"]}
 INSIDE = "in"
+HOLDING = "holding"
 TIME_LIMIT = 20.0  # seconds for one search; the kitchens' problems take well under one
 
 
 class Planner(Protocol):
     def plan(self, world: World, state: State, goal: Sequence[Fact]) -> tuple[Call, ...] | None:
         """Calls that take `state` to one where every goal fact holds; None when there are none."""
+
+    def kit_for(self, goal: Sequence[Fact]) -> frozenset[str] | None:
+        """The everyday things a search for `goal` may use besides the goal's objects; None: every object."""
 
 
 class FastDownward:
@@ -50,11 +54,13 @@ class FastDownward:
     def plan(self, world: World, state: State, goal: Sequence[Fact]) -> tuple[Call, ...] | None:
         if all_reached(state, goal):
             return ()
-        kit = None if self.kit is None else frozenset().union(
-            self.kit.get("*", ()), *(self.kit.get(fact[0], ()) for fact in goal))
         with self._lock:
-            actions = _solve(world.domain.path, focus(state, goal, kit), tuple(goal), self.time_limit)
+            actions = _solve(world.domain.path, focus(state, goal, self.kit_for(goal)), tuple(goal), self.time_limit)
         return None if actions is None else as_calls(world, state, goal, actions)
+
+    def kit_for(self, goal: Sequence[Fact]) -> frozenset[str] | None:
+        return None if self.kit is None else frozenset().union(
+            self.kit.get("*", ()), *(self.kit.get(fact[0], ()) for fact in goal))
 
 
 def all_reached(state: State, goal: Sequence[Fact]) -> bool:
@@ -76,7 +82,7 @@ def focus(state: State, goal: Sequence[Fact], kit: frozenset[str] | None) -> Sta
     if kit is None:
         return state
     keep = {arg for fact in goal for arg in fact[1:]} | (kit & set(state.objects))
-    keep |= {f[1] for f in state.by_predicate.get("holding", ())}
+    keep |= {f[1] for f in state.by_predicate.get(HOLDING, ())}
     parent = {f[1]: f[2] for f in state.by_predicate.get("in", ())}
     for name in list(keep):
         while name in parent and parent[name] not in keep:

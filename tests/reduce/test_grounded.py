@@ -1,0 +1,63 @@
+"""State-aware decoding where a way to the effect is known: the lines name only what matters, a plan stops at its
+first detour, and it takes at most a few lines more than the planner's way."""
+
+import pytest
+
+from cook2ltl.domain.actions import Action, Parameter
+from cook2ltl.reduce.grounded import SLACK, reduce_in_world
+from cook2ltl.reduce.primitives import load_primitives
+from cook2ltl.reduce.reduction import ReductionSettings
+from cook2ltl.world.kitchens import grounding
+from tests.reduce.fake_model import ScriptedModel
+
+PRIMITIVES = load_primitives("recipe")
+
+
+@pytest.fixture(scope="module")
+def kitchen():
+    return grounding(PRIMITIVES)
+
+
+def act(verb, **slots):
+    return Action(verb, tuple(Parameter(category, value, value, value) for category, value in slots.items()))
+
+
+def reduce(kitchen, action, answer, effect):
+    model = ScriptedModel({action.verb: answer})
+    state = kitchen.start(action.objects).state
+    return reduce_in_world(action, PRIMITIVES, model, ReductionSettings(), kitchen, state, effect), model
+
+
+def test_lines_name_only_what_the_effect_needs_the_kitchens_everyday_things_and_the_actions_own(kitchen):
+    reduction, model = reduce(kitchen, act("boil", what="pasta"), "turn_on(toaster)\npick_up(pasta)",
+                              (("boiled", "pasta"),))
+    offered = model.grammars[0].splitlines()
+    assert "pick_up(pasta)" in offered and "turn_on(stovetop)" in offered  # the kit's stovetop heats
+    assert not any("toaster" in line or "grill" in line for line in offered)  # neither in the kit nor on the way
+    assert [c.text() for c in reduction.body] == ["pick_up(pasta)"]
+
+
+def test_without_an_effect_every_object_may_be_named(kitchen):
+    _, model = reduce(kitchen, act("boil", what="pasta"), "turn_on(toaster)", ())
+    assert "turn_on(toaster)" in model.grammars[0].splitlines()
+
+
+def test_a_plan_ends_at_the_first_line_back_to_where_it_had_been(kitchen):
+    answer = "pick_up(pasta)\nput(pasta, pot)\npick_up(pasta)\nput(pasta, pot)\nturn_on(stovetop)"
+    reduction, model = reduce(kitchen, act("boil", what="pasta"), answer, (("boiled", "pasta"),))
+    # the second pick_up(pasta) takes it back out of the pot: the state after the first line again
+    assert [c.text() for c in reduction.body] == ["pick_up(pasta)", "put(pasta, pot)"]
+    assert len(model.grammars) == 3  # no line is offered after the detour
+
+
+def test_a_plan_takes_at_most_a_few_lines_more_than_the_planners_way(kitchen):
+    way = kitchen.planner.plan(kitchen.world, kitchen.start(["pasta"]).state, (("boiled", "pasta"),))
+    wandering = "\n".join(f"{verb}({thing})" for thing in ("fridge", "oven", "fridge", "oven") for verb in ("open", "close"))
+    reduction, _ = reduce(kitchen, act("boil", what="pasta"), wandering.replace("close(oven)", "stir(pot)"),
+                          (("boiled", "pasta"),))
+    assert 0 < len(reduction.body) <= len(way) + SLACK
+
+
+def test_the_prompt_lists_no_library_verbs_the_line_grammar_could_not_offer(kitchen):
+    _, model = reduce(kitchen, act("boil", what="pasta"), "pick_up(pasta)", (("boiled", "pasta"),))
+    assert "from library import" not in model.prompts[0]
