@@ -50,12 +50,19 @@ class FastDownward:
         self.kit = None if kit is None else {predicate: frozenset(names) for predicate, names in table.items()}
         self.time_limit = time_limit
         self._lock = threading.Lock()
+        self._solved: dict[tuple, list | None] = {}  # searches done, by their problem up to the names of things
 
     def plan(self, world: World, state: State, goal: Sequence[Fact]) -> tuple[Call, ...] | None:
         if all_reached(state, goal):
             return ()
+        kit = self.kit_for(goal)
+        focused = focus(state, goal, kit)
+        key, named = _up_to_names(world.domain.path, focused, goal, kit or frozenset())
         with self._lock:
-            actions = _solve(world.domain.path, focus(state, goal, self.kit_for(goal)), tuple(goal), self.time_limit)
+            if key not in self._solved:
+                solved = _solve(world.domain.path, focused, tuple(goal), self.time_limit)
+                self._solved[key] = _renamed(solved, {real: alias for alias, real in named.items()})
+            actions = _renamed(self._solved[key], named)
         return None if actions is None else as_calls(world, state, goal, actions)
 
     def kit_for(self, goal: Sequence[Fact]) -> frozenset[str] | None:
@@ -90,6 +97,31 @@ def focus(state: State, goal: Sequence[Fact], kit: frozenset[str] | None) -> Sta
             keep.add(name)
     objects = tuple(o for o in state.objects if o in keep)
     return State(objects, frozenset(f for f in state.facts if all(a in keep for a in f[1:])))
+
+
+def _up_to_names(domain: Path, state: State, goal: Sequence[Fact], kit: frozenset[str]
+                 ) -> tuple[tuple, dict[str, str]]:
+    """The search problem with every object outside the kit renamed (the goal's first, in its order), so that
+    boiling the penne and boiling the rice from the same kitchen are one search; and each alias's real name."""
+    aliases: dict[str, str] = {}
+    for name in [a for fact in goal for a in fact[1:]] + sorted(state.objects, key=lambda o: (_shape(state, o), o)):
+        if name not in kit and name not in aliases:
+            aliases[name] = f"#{len(aliases)}"  # no object is named so
+
+    def renamed(fact: Fact) -> Fact:
+        return (fact[0], *(aliases.get(a, a) for a in fact[1:]))
+
+    key = (domain, frozenset(map(renamed, state.facts)), tuple(map(renamed, goal)))
+    return key, {alias: real for real, alias in aliases.items()}
+
+
+def _shape(state: State, name: str) -> tuple:
+    """What is true of an object, its own name left out: objects alike in every fact are renamed in name order."""
+    return tuple(sorted(tuple("*" if a == name else a for a in fact) for fact in state.facts if name in fact[1:]))
+
+
+def _renamed(actions: list | None, names: Mapping[str, str]) -> list | None:
+    return None if actions is None else [(n, tuple(names.get(a, a) for a in args)) for n, args in actions]
 
 
 def _solve(domain: Path, state: State, goal: tuple[Fact, ...], time_limit: float):
