@@ -38,8 +38,9 @@ def dependency_parser() -> SpacyDependencies:
     return SpacyDependencies(entry.module)
 
 
-def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
-    """A GGUF model of the manifest by name; it is read from disk at its first completion."""
+def load_model(name: str = DEFAULT_MODEL, lanes: int = 1) -> LlamaModel:
+    """A GGUF model of the manifest by name; it is read from disk at its first completion. With `lanes` > 1,
+    that many threads may use it at once, their completions decoded in one batch."""
     manifest = load_manifest()
     choices = [entry.name for entry in manifest.values() if entry.file.endswith(".gguf")]
     entry = manifest.get(name)
@@ -47,8 +48,13 @@ def load_model(name: str = DEFAULT_MODEL) -> LlamaModel:
         raise UserError(f"No language model {name!r} in the model manifest.", f"choose one of: {', '.join(choices)}.")
     if state_of(entry, verify_hash=False) != ModelState.READY:
         raise UserError(f"The model {name!r} is not provisioned.", "run `make models` (or `cook2ltl models provision`).")
+    time_limit = load_settings().limits.llm_seconds
+    if lanes > 1:
+        from cook2ltl.reduce.batched import BatchedLlamaModel  # heavy: numpy (~150 ms), only for batched decoding
+
+        return BatchedLlamaModel(name, model_path(entry), lanes, time_limit=time_limit)
     return LlamaModel(name, model_path(entry), state_dir=paths.model_cache_dir() / "prompt-states",
-                      time_limit=load_settings().limits.llm_seconds)
+                      time_limit=time_limit)
 
 
 def _provisioned(name: str) -> Path:

@@ -46,8 +46,9 @@ from cook2ltl.formulas.formula import direct_calls
 from cook2ltl.library import Library
 from cook2ltl.parse import parse_recipe
 from cook2ltl.pipeline.rates import rates
-from cook2ltl.pipeline.records import Translation, TranslationFinished, Variant
-from cook2ltl.pipeline.translator import Translator, translate
+from cook2ltl.pipeline.records import Translation, Variant
+from cook2ltl.pipeline.side_by_side import translate_side_by_side
+from cook2ltl.pipeline.translator import Translator
 from cook2ltl.reduce.action import actions_of
 from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.validation import PlanValidator
@@ -133,12 +134,14 @@ def plan_admissibility(translation: Translation) -> tuple[int, int]:
     return admissible, inadmissible
 
 
-def run_variant(stage: Stage, translator: Translator, progress: Callable[[dict], None]) -> dict:
-    """One variant over every recipe: summed statistics, both executabilities, validated rate, per-recipe calls."""
+def run_variant(stage: Stage, translators: list[Translator], progress: Callable[[dict], None]) -> dict:
+    """One variant over every recipe, side by side with several translators: summed statistics, both
+    executabilities, validated rate, per-recipe calls, and the time it took from start to end."""
     totals: dict[str, float] = {"admissible": 0, "inadmissible": 0, "check_seconds": 0.0}
     translations, per_recipe = [], []
-    for number, recipe in zip(stage.numbers, stage.recipes):
-        translation = next(e.translation for e in translate(recipe, translator) if isinstance(e, TranslationFinished))
+    started = time.perf_counter()
+    for index, translation in translate_side_by_side(stage.recipes, translators):
+        number = stage.numbers[index]
         translations.append(translation)
         admissible, inadmissible = plan_admissibility(translation)
         totals["admissible"] += admissible
@@ -150,8 +153,9 @@ def run_variant(stage: Stage, translator: Translator, progress: Callable[[dict],
         per_recipe.append({"recipe": number, "actions": translation.stats.actions,
                            "llm_calls": translation.stats.llm_calls, "cross_reuses": translation.stats.cross_reuses,
                            "seconds": round(translation.stats.seconds, 3)})
+        totals["elapsed_seconds"] = time.perf_counter() - started
         progress(_summary(totals, translations, stage) | {"per_recipe": per_recipe})
-    return _summary(totals, translations, stage) | {"per_recipe": per_recipe}
+    return _summary(totals, translations, stage) | {"per_recipe": per_recipe, "workers": len(translators)}
 
 
 def _summary(totals: dict[str, float], translations: list[Translation], stage: Stage) -> dict:
@@ -163,7 +167,7 @@ def _summary(totals: dict[str, float], translations: list[Translation], stage: S
         "line_executability": counts.executability, "new_reductions": counts.new_reductions,
         "validated_rate": counts.validated_rate, "refusals": refusals(translations), **world_counts(translations),
         # The recipes' parse is shared by the variants of a run; each variant's time includes it.
-        "wall_seconds": round(totals.get("seconds", 0.0) - totals["check_seconds"] + stage.parse_seconds, 3),
+        "wall_seconds": round(totals.get("elapsed_seconds", 0.0) - totals["check_seconds"] + stage.parse_seconds, 3),
         "recipes_done": len(translations),
     }
 
@@ -192,7 +196,8 @@ def in_run_order(stage: Stage, seed: int) -> Stage:
 
 
 def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int | None, out: Path,
-               echo: Callable[[str], None], seed: int = FIRST_SEED, primitive_set: str = "recipe") -> dict:
+               echo: Callable[[str], None], seed: int = FIRST_SEED, primitive_set: str = "recipe", workers: int = 1
+               ) -> dict:
     """Table I with the real models, runs seeded `seed`, `seed` + 1, …; the record and table are rewritten
     after each recipe."""
 
@@ -200,10 +205,10 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
     recipes = eval_recipes(limit)
     stage = parse_all(recipes)
     echo(f"{len(recipes)} recipes parsed in {stage.parse_seconds:.1f} s (models loaded in {stage.load_seconds:.1f} s)")
-    model, primitives = load_model(model_name), load_primitives(primitive_set)
+    model, primitives = load_model(model_name, lanes=workers), load_primitives(primitive_set)
     started = time.perf_counter()
     model.complete("", "x", 'root ::= "x"', 1)  # the weights are read outside the timings
-    record = {"model": model_name, "recipes": len(recipes), "primitives": primitives.name,
+    record = {"model": model_name, "recipes": len(recipes), "primitives": primitives.name, "workers": workers,
               "parse_seconds": round(stage.parse_seconds, 3), "load_seconds": round(stage.load_seconds, 3),
               "llm_load_seconds": round(time.perf_counter() - started, 3), "runs": [],
               "library_bound": library_bound(stage, primitives)}
@@ -213,7 +218,7 @@ def run_table1(model_name: str, runs: int, variants: tuple[str, ...], limit: int
 
 
     with KitchenValidator(primitives) as validator:
-        record["runs"] = measure(stage, model, primitives, validator, runs, variants, seed, report, echo)
+        record["runs"] = measure(stage, model, primitives, validator, runs, variants, seed, report, echo, workers)
     return record
 
 
@@ -227,9 +232,11 @@ def check_variants(variants: tuple[str, ...]) -> None:
 
 
 def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int, variants: tuple[str, ...],
-            seed: int, report: Callable[[list[dict]], None], echo: Callable[[str], None]) -> list[dict]:
+            seed: int, report: Callable[[list[dict]], None], echo: Callable[[str], None], workers: int = 1
+            ) -> list[dict]:
     """Each run (its own seed, recipe order and empty libraries) over the variants in VARIANTS order; `report`
-    gets every row so far after each recipe, the running one last."""
+    gets every row so far after each recipe, the running one last. The world variant translates `workers`
+    recipes side by side."""
 
     rows: list[dict] = []
     for index in range(runs):
@@ -238,6 +245,7 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
         with tempfile.TemporaryDirectory() as folder:
             grown, fresh = Library(Path(folder) / "grown.sqlite"), Library(Path(folder) / "repair.sqlite")
             own = Library(Path(folder) / "world.sqlite")
+            opened = [grown, fresh, own]
             try:
                 for name in [v for v in VARIANTS if v in variants]:
                     if name == APPROVED:
@@ -248,14 +256,19 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                     options = TranslateOptions(variant, check=None if name == WORLD else True,
                                                repairs=REPAIRS if name == REPAIR else 0,
                                                approved_only=name == APPROVED, ground=name == WORLD)
-                    translator = build_translator(primitives, model, library, options, lambda _: validator, echo)
+                    translators = [build_translator(primitives, model, library, options, lambda _: validator, echo)]
+                    if name == WORLD:  # no kitchen checks (one THOR kitchen serves one thread): side by side
+                        more = [Library(own.path) for _ in range(workers - 1)]
+                        opened.extend(more)
+                        translators += [build_translator(primitives, model, extra, options, lambda _: validator, echo)
+                                        for extra in more]
                     head = {"variant": name, "model": model.name, "seed": run_seed}
-                    rows.append(head | run_variant(run_stage, translator, lambda partial: report(rows + [head | partial])))
+                    rows.append(head | run_variant(run_stage, translators, lambda partial: report(rows + [head | partial])))
                     report(rows)
                     echo(f"run {index + 1} {name:<18} calls {rows[-1]['llm_calls']:>4}  executability "
                          f"{rows[-1]['executability']:.3f}  {rows[-1]['wall_seconds'] / 60:.2f} min")
             finally:
-                for library in (grown, fresh, own):
+                for library in opened:
                     library.close()
     return rows
 

@@ -53,6 +53,8 @@ def bench_command(
         None, help="Table I: combine these table1.json results (repeatable) into <out>/table1.json and .md instead "
                    "of running."),
     finished: bool = typer.Option(False, help="With --combine: leave out runs stopped before the last recipe."),
+    workers: int = typer.Option(1, min=1, max=8, help="Table I's world variant: recipes translated side by side, "
+                                                      "their model calls decoded in one batch."),
 ) -> None:
     """Measure and write bench/results/<name>.json and .md (a benchmark, not a test: it takes long)."""
     if (combine or finished) and (which != Benchmark.TABLE1 or not combine):
@@ -80,7 +82,7 @@ def bench_command(
 
         chosen_variants = tuple(variant or (SMOKE_VARIANTS if smoke else VARIANTS))
         run_table1(model, 1 if smoke else runs or 3, chosen_variants, 1 if smoke else recipes, out, echo,
-                   FIRST_SEED if seed is None else seed, primitives)
+                   FIRST_SEED if seed is None else seed, primitives, workers)
     if Benchmark.TABLE2 in chosen:
         from cook2ltl.bench.table2 import COLUMNS, run_table2  # loaded only when chosen
 

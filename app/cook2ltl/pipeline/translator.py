@@ -37,6 +37,7 @@ from cook2ltl.ltl.ast import Formula
 from cook2ltl.ltl.patterns import Element, sequenced_visit
 from cook2ltl.parse.backends import DependencyParser, SpanExtractor
 from cook2ltl.parse.recipe import parse_recipe
+from cook2ltl.pipeline.claims import Claims
 from cook2ltl.pipeline.records import (
     ActionDone, ActionResult, Parsed, Stats, StepDone, StepResult, Translation, TranslationEvent,
     TranslationFinished, TranslationStarted, Variant,
@@ -68,6 +69,7 @@ class Translator:
     approved_only: bool = False  # lab mode: reuse approved library entries only
     grounding: Grounding | None = None  # the world model every plan is checked and completed in (None: off)
     reuse: bool = True  # reuse an entry across verbs of one table row and across signatures (False: exact keys)
+    claims: Claims | None = None  # keys being reduced by translations running beside this one
 
 
 def run(text: str, spans: SpanExtractor, dependencies: DependencyParser, translator: Translator,
@@ -163,33 +165,56 @@ class _Run:
                 result = ActionResult(frame_index, Reduction(action, calls, Source.PRIMITIVE), plan, check=grounded)
                 element = direct_element(action, calls, primitives) if plan == calls else plan_element(plan, primitives)
                 return result, element
-        stale = None
-        if self.uses_library:
-            entry = self.t.library.lookup(primitives.name, action.verb, action.signature, self.t.approved_only)
-            if entry is not None and not entry.has_plan:  # the model found no plan before: not asked again
-                self._count(library_hits=1, no_plan_hits=1)
-                reduction = Reduction(action, (), Source.LIBRARY, entry_id=entry.id)
-                return ActionResult(frame_index, reduction, (), entry_validation=entry.validation,
-                                    entry_problems=entry.problems), None
-            body = instantiate(entry.body, placeholders(action)) if entry else None
-            plan = self._expand(body) if body is not None else None
-            stale = entry.id if entry and not plan else None  # written for another version of the primitive set
-            found = self._reusable(action, entry) if not plan and self.t.reuse else None
-            reuse = None
-            if found is not None:  # learnt for another verb or signature: shown with why it serves
-                fit, plan = found
-                entry, body, reuse = fit.entry, fit.body, fit.reuse
-            if plan:  # a reuse is held to the action's own effect where the table knows it, else to the entry's
-                effect = self._effect(action, None if reuse and table_effect(action.verb) is not None else entry.effect)
-                if done := self._needless(frame_index, action, effect):
-                    return done, None
-                self._count(library_hits=1, cross_reuses=int(reuse is not None))
-                grounded = self._ground(action, plan, "library", effect)
-                plan = grounded.plan if grounded else plan
-                reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
-                result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
-                                      entry_problems=entry.problems, check=grounded, reuse=reuse)
-                return result, plan_element(plan, primitives) if plan else None
+        if not self.uses_library:
+            return self._from_model(frame_index, action, None)
+        key = (primitives.name, action.verb, action.signature)
+        done, stale = self._from_library(frame_index, action)
+        while done is None and self.t.claims is not None and not self.t.claims.take(key):
+            done, stale = self._from_library(frame_index, action)  # learnt meanwhile beside us: look again
+        if done is not None:
+            return done
+        try:
+            return self._from_model(frame_index, action, stale)
+        finally:
+            if self.t.claims is not None:
+                self.t.claims.give_back(key)
+
+    def _from_library(self, frame_index: int, action: Action
+                      ) -> tuple[tuple[ActionResult, Element | None] | None, int | None]:
+        """The action done from the library (its entry, or one that serves it), or why not: (None, the id of the
+        exact key's entry written for another version of the primitive set, if any)."""
+        primitives = self.t.primitives
+        entry = self.t.library.lookup(primitives.name, action.verb, action.signature, self.t.approved_only)
+        if entry is not None and not entry.has_plan:  # the model found no plan before: not asked again
+            self._count(library_hits=1, no_plan_hits=1)
+            reduction = Reduction(action, (), Source.LIBRARY, entry_id=entry.id)
+            return (ActionResult(frame_index, reduction, (), entry_validation=entry.validation,
+                                 entry_problems=entry.problems), None), None
+        body = instantiate(entry.body, placeholders(action)) if entry else None
+        plan = self._expand(body) if body is not None else None
+        stale = entry.id if entry and not plan else None  # written for another version of the primitive set
+        found = self._reusable(action, entry) if not plan and self.t.reuse else None
+        reuse = None
+        if found is not None:  # learnt for another verb or signature: shown with why it serves
+            fit, plan = found
+            entry, body, reuse = fit.entry, fit.body, fit.reuse
+        if plan:  # a reuse is held to the action's own effect where the table knows it, else to the entry's
+            effect = self._effect(action, None if reuse and table_effect(action.verb) is not None else entry.effect)
+            if done := self._needless(frame_index, action, effect):
+                return (done, None), None
+            self._count(library_hits=1, cross_reuses=int(reuse is not None))
+            grounded = self._ground(action, plan, "library", effect)
+            plan = grounded.plan if grounded else plan
+            reduction = Reduction(action, body, Source.LIBRARY, entry_id=entry.id)
+            result = ActionResult(frame_index, reduction, plan, entry_validation=entry.validation,
+                                  entry_problems=entry.problems, check=grounded, reuse=reuse)
+            return (result, plan_element(plan, primitives) if plan else None), None
+        return None, stale
+
+    def _from_model(self, frame_index: int, action: Action, stale: int | None
+                    ) -> tuple[ActionResult, Element | None]:
+        """The action reduced by the model (in the world model where there is one), and learnt."""
+        primitives = self.t.primitives
         in_world = (self.t.grounding is not None and hasattr(self.t.model, "complete_lines")
                     and not self.t.settings.comments)  # the line grammar has no comment lines
         effect = self._effect(action)

@@ -5,13 +5,14 @@ cost almost half the time of a reduction. At temperature 0 the next token is the
 grammar admits, so the SHORTLIST best tokens are tried first and the whole vocabulary only when the grammar
 refuses them all: the same tokens come out, several times cheaper.
 
-`llama` is a llama_cpp.Llama; llama_cpp is imported by the caller before any of this runs.
+llama_cpp is imported by the caller before any of this runs.
 """
 
 from __future__ import annotations
 
 import ctypes
 from collections.abc import Callable, Iterator
+from typing import Protocol
 
 import numpy as np
 
@@ -24,33 +25,66 @@ class GrammarRejected(ValueError):
     """llama.cpp could not parse the grammar."""
 
 
-def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
+class Lane(Protocol):
+    """One sequence of evaluated tokens: a llama.cpp context of its own (`SoloLane`), or one of several sequences
+    decoded together in one batch (`cook2ltl.reduce.batched`)."""
+
+    n_tokens: int  # how many tokens are evaluated; lowering it makes the next `eval` go on from there
+
+    def eval(self, tokens: list[int]) -> None: ...
+
+    def scores(self) -> np.ndarray:
+        """The next-token logits after the last evaluated token."""
+
+
+class SoloLane:
+    """A llama_cpp.Llama's own context as a lane."""
+
+    def __init__(self, llama) -> None:
+        self.llama = llama
+
+    @property
+    def n_tokens(self) -> int:
+        return self.llama.n_tokens
+
+    @n_tokens.setter
+    def n_tokens(self, count: int) -> None:
+        self.llama.n_tokens = count
+
+    def eval(self, tokens: list[int]) -> None:
+        self.llama.eval(tokens)
+
+    def scores(self) -> np.ndarray:
+        import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
+
+        size = llama_cpp.llama_vocab_n_tokens(self.llama._model.vocab)
+        return np.ctypeslib.as_array(llama_cpp.llama_get_logits_ith(self.llama._ctx.ctx, -1), shape=(size,))
+
+
+def greedy_tokens(lane: Lane, vocab, grammar: str, prompt: list[int], max_tokens: int,
                   keep_going: Callable[[list[int]], bool],
                   forced: Callable[[list[int]], list[int]] | None = None) -> Iterator[int]:
     """Yield the tokens of the greedy completion of `prompt` that `grammar` admits, up to an end-of-generation
-    token or `max_tokens`. Evaluation goes on from the tokens `llama` already holds (a shared prefix);
+    token or `max_tokens`. Evaluation goes on from the tokens `lane` already holds (a shared prefix);
     `keep_going(tokens so far)` may end it after any token. The token that ends it is kept: one token can
     close a line and open the next (")\n"), and cutting it would leave the line unfinished. `forced(tokens so
     far)` may give the tokens that must follow (the grammar leaves one way to go on): they are evaluated in one
-    batch, which costs about one token's time on a CPU, yielded, and the completion ends."""
+    batch, which costs about one token's time on a CPU, yielded, and the completion ends. `vocab` is the model's
+    llama.cpp vocabulary."""
     import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
-    vocab = llama._model.vocab
     sampler = llama_cpp.llama_sampler_init_grammar(vocab, grammar.encode(), b"root")
     if not sampler:
         raise GrammarRejected("llama.cpp could not parse the grammar")
     try:
-        tail = prompt[llama.n_tokens:]
+        tail = prompt[lane.n_tokens:]
         if not tail:  # the whole prompt is already evaluated: replay its last token to get fresh scores
-            llama.n_tokens -= 1
+            lane.n_tokens -= 1
             tail = prompt[-1:]
-        llama.eval(tail)
+        lane.eval(tail)
         generated: list[int] = []
-        vocabulary_size = llama_cpp.llama_vocab_n_tokens(vocab)
         while len(generated) < max_tokens:
-            scores = np.ctypeslib.as_array(llama_cpp.llama_get_logits_ith(llama._ctx.ctx, -1),
-                                           shape=(vocabulary_size,))
-            token = _best_admitted(sampler, scores)
+            token = _best_admitted(sampler, lane.scores())
             if token is None or llama_cpp.llama_vocab_is_eog(vocab, token):
                 return
             llama_cpp.llama_sampler_accept(sampler, token)
@@ -60,10 +94,10 @@ def greedy_tokens(llama, grammar: str, prompt: list[int], max_tokens: int,
                 return
             rest = forced(generated) if forced is not None else []
             if rest and len(generated) + len(rest) <= max_tokens:
-                llama.eval([token, *rest])
+                lane.eval([token, *rest])
                 yield from rest
                 return
-            llama.eval([token])
+            lane.eval([token])
     finally:
         llama_cpp.llama_sampler_free(sampler)
 

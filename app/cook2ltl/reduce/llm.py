@@ -17,13 +17,18 @@ import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Protocol
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import TYPE_CHECKING, Callable, Protocol
 
 from cook2ltl import offline
 from cook2ltl.domain.actions import Usage
 from cook2ltl.domain.settings import Limits
 from cook2ltl.errors import UserError
 from cook2ltl.reduce.grammar import gbnf_literal
+
+if TYPE_CHECKING:
+    from cook2ltl.reduce.decoding import Lane
 
 CONTEXT_TOKENS = 4096
 DEFAULT_TIME_LIMIT = Limits.llm_seconds  # seconds; load_model takes the settings' [limits] llm_seconds
@@ -86,6 +91,7 @@ class LlamaModel:
         self.time_limit = time_limit
         self.cancel = threading.Event()  # a caller may replace it with its own job's event
         self._llama = None
+        self._loading = threading.Lock()
 
     def complete(self, static: str, dynamic: str, grammar: str, max_tokens: int,
                  stop: Callable[[str], bool] | None = None) -> Completion:
@@ -103,7 +109,6 @@ class LlamaModel:
                             "shorten the step, or review the library: every verb in it is listed in the prompt.")
         deadline = started + self.time_limit
         self._check(deadline)
-        self._keep_only(llama, prefix, static, deadline)
 
         def keep_going(ids: list[int]) -> bool:
             if self.cancel.is_set() or time.perf_counter() > deadline:
@@ -113,10 +118,11 @@ class LlamaModel:
         generated: list[int] = []
         prompt_seconds = 0.0
         try:
-            for token in greedy_tokens(llama, grammar, tokens, min(max_tokens, room), keep_going):
-                # the first token comes once the prompt is evaluated (its tail beyond the cached static part)
-                prompt_seconds = prompt_seconds or time.perf_counter() - started
-                generated.append(token)
+            with self._lane(static, prefix, deadline) as lane:
+                for token in greedy_tokens(lane, llama._model.vocab, grammar, tokens, min(max_tokens, room), keep_going):
+                    # the first token comes once the prompt is evaluated (its tail beyond the cached static part)
+                    prompt_seconds = prompt_seconds or time.perf_counter() - started
+                    generated.append(token)
         except GrammarRejected as error:
             hint = "every word in it is escaped, so this is a bug in cook2ltl: please report it with the recipe."
             raise UserError("llama.cpp rejected the generated grammar.", hint) from error
@@ -128,14 +134,19 @@ class LlamaModel:
     def complete_lines(self, static: str, dynamic: str, next_lines: Callable[[str], list[str] | None],
                        tokens_per_line: int) -> Completion:
         llama = self._loaded()
-        from cook2ltl.reduce.decoding import greedy_tokens  # heavy: numpy (~150 ms) loads with the first completion
-
         started = time.perf_counter()
         prefix = llama.tokenize(static.encode())
         tokens = prefix + llama.tokenize(dynamic.encode(), add_bos=False)
         deadline = started + self.time_limit
         self._check(deadline)
-        self._keep_only(llama, prefix, static, deadline)
+        with self._lane(static, prefix, deadline) as lane:
+            return self._lines(lane, tokens, next_lines, tokens_per_line, started, deadline)
+
+    def _lines(self, lane: Lane, tokens: list[int], next_lines: Callable[[str], list[str] | None], tokens_per_line: int,
+               started: float, deadline: float) -> Completion:
+        from cook2ltl.reduce.decoding import greedy_tokens  # heavy: numpy (~150 ms) loads with the first completion
+
+        llama = self._llama
         generated: list[int] = []
         text = ""
         choosing = prompt_seconds = 0.0  # the caller's time choosing lines is not the model's
@@ -160,8 +171,8 @@ class LlamaModel:
                     return []
                 return llama.tokenize(possible[0][len(written):].encode(), add_bos=False)
 
-            for token in greedy_tokens(llama, line_grammar(options), tokens + generated, tokens_per_line, line_open,
-                                       forced):
+            for token in greedy_tokens(lane, llama._model.vocab, line_grammar(options), tokens + generated,
+                                       tokens_per_line, line_open, forced):
                 prompt_seconds = prompt_seconds or time.perf_counter() - started - choosing
                 line.append(token)
             self._check(deadline)
@@ -171,6 +182,14 @@ class LlamaModel:
                 break  # a blank line: the model ended the body
         seconds = time.perf_counter() - started - choosing
         return Completion(text, Usage(len(tokens), len(generated), seconds, prompt_seconds or seconds, choosing))
+
+    @contextmanager
+    def _lane(self, static: str, prefix: list[int], deadline: float) -> Iterator[Lane]:
+        """The lane a completion decodes in, holding the evaluated static part: this model's own context."""
+        from cook2ltl.reduce.decoding import SoloLane  # heavy: numpy (~150 ms) loads with the first completion
+
+        self._keep_only(self._llama, prefix, static, deadline)
+        yield SoloLane(self._llama)
 
     def _text(self, ids: list[int]) -> str:
         return self._llama.detokenize(ids).decode("utf-8", errors="ignore")
@@ -234,12 +253,14 @@ class LlamaModel:
             partial.replace(path)  # never a half-written state under the final name
 
     def _loaded(self):
-        if self._llama is None:
-            offline.enforce()  # sets GOMP_SPINCOUNT before llama.cpp starts its threads
-            try:
-                from llama_cpp import Llama  # heavy, optional: loaded with the model, after offline.enforce()
-            except ImportError as error:
-                raise UserError("llama-cpp-python is not installed.", "install the `llm` extra: pip install -e '.[llm]'.") from error
-            self._llama = Llama(model_path=str(self.path), n_ctx=CONTEXT_TOKENS, n_threads=self.threads,
-                                verbose=False)
+        with self._loading:  # threads sharing a batched model ask for it at once; it is loaded once
+            return self._llama or self._load()
+
+    def _load(self):
+        offline.enforce()  # sets GOMP_SPINCOUNT before llama.cpp starts its threads
+        try:
+            from llama_cpp import Llama  # heavy, optional: loaded with the model, after offline.enforce()
+        except ImportError as error:
+            raise UserError("llama-cpp-python is not installed.", "install the `llm` extra: pip install -e '.[llm]'.") from error
+        self._llama = Llama(model_path=str(self.path), n_ctx=CONTEXT_TOKENS, n_threads=self.threads, verbose=False)
         return self._llama
