@@ -260,8 +260,9 @@ def measure(stage: Stage, model, primitives, validator: PlanValidator, runs: int
                     if name == WORLD:  # no kitchen checks (one THOR kitchen serves one thread): side by side
                         more = [Library(own.path) for _ in range(workers - 1)]
                         opened.extend(more)
-                        translators += [build_translator(primitives, model, extra, options, lambda _: validator, echo)
-                                        for extra in more]
+                        translators += [replace(build_translator(primitives, model, extra, options, lambda _: validator,
+                                                                 echo), grounding=translators[0].grounding)
+                                        for extra in more]  # one world and planner, its searches shared
                     head = {"variant": name, "model": model.name, "seed": run_seed}
                     rows.append(head | run_variant(run_stage, translators, lambda partial: report(rows + [head | partial])))
                     report(rows)

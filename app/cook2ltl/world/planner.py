@@ -26,6 +26,9 @@ ENGINE_OPTIONS = {"fast_downward_translate_options": ["--invariant-generation-ma
 INSIDE = "in"
 HOLDING = "holding"
 TIME_LIMIT = 20.0  # seconds for one search; the kitchens' problems take well under one
+# unified-planning's expressions live in one environment per process, which is not safe to build in from two
+# threads at once: every search, by any planner, takes this lock.
+_SEARCHING = threading.Lock()
 
 
 class Planner(Protocol):
@@ -49,7 +52,6 @@ class FastDownward:
         table = {"*": kit} if kit is not None and not isinstance(kit, Mapping) else (kit or {})
         self.kit = None if kit is None else {predicate: frozenset(names) for predicate, names in table.items()}
         self.time_limit = time_limit
-        self._lock = threading.Lock()
         self._solved: dict[tuple, list | None] = {}  # searches done, by their problem up to the names of things
 
     def plan(self, world: World, state: State, goal: Sequence[Fact]) -> tuple[Call, ...] | None:
@@ -58,7 +60,7 @@ class FastDownward:
         kit = self.kit_for(goal)
         focused = focus(state, goal, kit)
         key, named = _up_to_names(world.domain.path, focused, goal, kit or frozenset())
-        with self._lock:
+        with _SEARCHING:
             if key not in self._solved:
                 solved = _solve(world.domain.path, focused, tuple(goal), self.time_limit)
                 self._solved[key] = _renamed(solved, {real: alias for alias, real in named.items()})
