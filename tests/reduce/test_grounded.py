@@ -61,3 +61,24 @@ def test_a_plan_takes_at_most_a_few_lines_more_than_the_planners_way(kitchen):
 def test_the_prompt_lists_no_library_verbs_the_line_grammar_could_not_offer(kitchen):
     _, model = reduce(kitchen, act("boil", what="pasta"), "pick_up(pasta)", (("boiled", "pasta"),))
     assert "from library import" not in model.prompts[0]
+
+
+def test_without_an_effect_a_line_that_changes_nothing_is_kept_and_a_repeat_ends_the_plan(kitchen):
+    reduction, _ = reduce(kitchen, act("serve", what="pasta"), "taste(pasta)\ntaste(pasta)\npick_up(pasta)", ())
+    assert [c.text() for c in reduction.body] == ["taste(pasta)", "taste(pasta)"]
+
+
+def test_lines_that_lead_where_the_effect_cannot_be_reached_give_way_to_the_planners_plan(kitchen):
+    from cook2ltl.domain.actions import Call
+    from cook2ltl.world.check import check_plan
+
+    start = kitchen.start(["pasta"]).state
+
+    class FromTheStartOnly:  # a kitchen where only the untouched start leads to the effect
+        def plan(self, world, state, goal):
+            return kitchen.planner.plan(world, state, goal) if state == start else None
+
+    checked = check_plan(kitchen.world, start, [Call("pick_up", ("pasta",))], (("boiled", "pasta"),),
+                         FromTheStartOnly())
+    assert checked.effect_reached and set(checked.written_by) == {"planner"}
+    assert "the effect cannot be reached after pick_up(pasta)" in checked.problems[0]

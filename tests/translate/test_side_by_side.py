@@ -16,7 +16,9 @@ from tests.reduce.fake_model import ScriptedModel
 
 PRIMITIVES = load_primitives("recipe")
 SPANS = {"Boil the egg.": [("VERB", "Boil"), ("WHAT", "the egg")],
-         "Chill the milk.": [("VERB", "Chill"), ("WHAT", "the milk")]}
+         "Chill the milk.": [("VERB", "Chill"), ("WHAT", "the milk")],
+         "Add the egg.": [("VERB", "Add"), ("WHAT", "the egg")],
+         "Add in the egg.": [("VERB", "Add in"), ("WHAT", "the egg")]}
 
 
 class SlowModel(ScriptedModel):
@@ -61,6 +63,14 @@ def test_every_recipe_once_and_a_shared_key_asked_once(libraries):
     plans = [[c.text() for r in done[i].steps[0].actions for c in r.plan] for i in (0, 2, 3, 5)]
     assert plans == [["pick_up(egg)", "put(egg, pot)"]] * 4
     assert sum(t.stats.llm_calls for t in done.values()) == 2 and len(libraries[0].entries()) == 2
+
+
+def test_an_action_another_verb_of_its_table_row_may_serve_waits_for_it(libraries):
+    model = SlowModel({"add": "pick_up(egg)\nput(egg, bowl)", "add_in": "pick_up(egg)\nput(egg, pot)"})
+    translators = [Translator(PRIMITIVES, model, library) for library in libraries[:2]]
+    done = dict(translate_side_by_side(recipes("Add the egg.", "Add in the egg."), translators))
+    assert model.calls == 1  # one waited for the other (the table reads add_in as add) and reused its entry
+    assert sorted(done[i].steps[0].actions[0].reuse is None for i in (0, 1)) == [False, True]
 
 
 def test_a_failure_is_raised_and_stops_the_rest(libraries):

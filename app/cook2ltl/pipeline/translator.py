@@ -51,7 +51,7 @@ from cook2ltl.reduce.reduction import LibraryVerb, ReductionSettings, expand, of
 from cook2ltl.reduce.repair import Checked, reduce_checked
 from cook2ltl.reduce.validation import CheckStatus, LineProblem, PlanValidator, RecipeSoFar, Validation
 from cook2ltl.world.check import Grounding, PlanCheck, check_plan
-from cook2ltl.world.effects import cast, table_effect, template_text
+from cook2ltl.world.effects import cast, known_verb, table_effect, template_text
 from cook2ltl.world.planner import all_reached
 
 NO_PLAN_PROBLEM = "the model wrote no admissible plan; write its body with `cook2ltl library edit`"
@@ -167,7 +167,10 @@ class _Run:
                 return result, element
         if not self.uses_library:
             return self._from_model(frame_index, action, None)
-        key = (primitives.name, action.verb, action.signature)
+        # What is claimed is the action, not the key: another verb of its table row may be learnt meanwhile
+        # and serve it (a reuse), so a recipe beside this one reducing any of them is waited for.
+        key = (primitives.name, (known_verb(action.verb) or action.verb) if self.t.reuse else action.verb,
+               () if self.t.reuse else action.signature)
         done, stale = self._from_library(frame_index, action)
         while done is None and self.t.claims is not None and not self.t.claims.take(key):
             done, stale = self._from_library(frame_index, action)  # learnt meanwhile beside us: look again

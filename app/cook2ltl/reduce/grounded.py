@@ -40,8 +40,8 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, model: LanguageMod
 
     def next_lines(text: str) -> list[str] | None:
         written, _ = read_body(text)
-        calls, went_through = _path(world, state, written)
-        if len(calls) < len(written) or len(calls) >= most_lines:
+        calls, went_through = _path(world, state, written, bool(effect))
+        if len(calls) < len(written) or len(calls) >= most_lines or _repeats(calls):
             return None  # the model went back to where it had been (it is looping), or wrote all a plan may take
         now = went_through[-1]
         options = admissible_calls(world, now, primitives, objects, vocab.states, vocab.durations)
@@ -53,16 +53,17 @@ def reduce_in_world(action: Action, primitives: PrimitiveSet, model: LanguageMod
     completion = model.complete_lines(prompt.static, prompt.dynamic, next_lines, TOKENS_PER_LINE)
     calls, unread = read_body(completion.text)
     usage = replace(completion.usage, choice_seconds=completion.usage.choice_seconds + planning)  # the world's time
-    return Reduction(action, _path(world, state, calls)[0], Source.LLM, usage, unread, prompt.digest)
+    return Reduction(action, _path(world, state, calls, bool(effect))[0], Source.LLM, usage, unread, prompt.digest)
 
 
-def _path(world: World, state: State, calls: Sequence[Call]) -> tuple[tuple[Call, ...], list[State]]:
-    """The lines up to the first that brings the kitchen back to a state the plan has been in (a detour, a
-    loop, a line that changes nothing), and the states they go through."""
+def _path(world: World, state: State, calls: Sequence[Call], detours: bool) -> tuple[tuple[Call, ...], list[State]]:
+    """The lines, up to the first that brings the kitchen back to a state the plan has been in (a detour, a
+    loop, a line that changes nothing) with `detours`, and the states they go through. Without an effect to
+    reach, progress cannot be told: only a line written twice in a row ends the plan (`_repeats`)."""
     went_through = [state]
     for count, call in enumerate(calls):
         after = world.apply(went_through[-1], call).state
-        if any(after.facts == visited.facts for visited in went_through):
+        if detours and any(after.facts == visited.facts for visited in went_through):
             return tuple(calls[:count]), went_through
         went_through.append(after)
     return tuple(calls), went_through
@@ -91,3 +92,5 @@ def _tidies(after: State, start: State, changed: int, effect: Sequence[Fact]) ->
     return len(after.facts ^ start.facts) < changed and all_reached(after, effect)
 
 
+def _repeats(calls: Sequence[Call]) -> bool:
+    return len(calls) >= 2 and calls[-1] == calls[-2]

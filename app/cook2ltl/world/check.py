@@ -3,7 +3,8 @@
 The lines are applied in order from the state the action starts in; a line that cannot be applied there is
 dropped and reported (the state stays as it was). If the intended effect does not hold at the end, the
 planner writes the rest from the state reached (LLM+P, Liu et al. 2023); with no lines at all it writes the
-whole plan. Lines the effect does not need are then dropped (`pruned`). Every line keeps who wrote it.
+whole plan, and where the lines led to a state the effect cannot be reached from, its plan from the start
+replaces them. Lines the effect does not need are then dropped (`pruned`). Every line keeps who wrote it.
 """
 
 from __future__ import annotations
@@ -88,6 +89,11 @@ def check_plan(world: World, state: State, plan: Sequence[Call], effect: Sequenc
     missing = [fact for fact in effect if not reached(state, fact)]
     if missing and planner is not None:
         rest = planner.plan(world, state, tuple(effect))
+        if rest is None and kept:  # the lines led where the effect cannot be reached: the planner's way instead
+            rest = planner.plan(world, start, tuple(effect))
+            if rest is not None:
+                problems.append(f"the effect cannot be reached after {kept[-1].text()}: the planner's plan instead")
+                kept, written_by, state = [], [], start
         if rest is None:
             problems.append(f"no plan reaches {', '.join(fact_text(f) for f in missing)} from here")
         else:
