@@ -44,7 +44,7 @@ def test_each_line_with_its_writer_and_the_formula_s_progress(recipe):
     assert "effect in(pasta, colander) ✓" in lines[drain]
     assert lines[drain + 1].split()[:3] == ["✓", "pick_up(pot)", "model"]
     assert "−in(pot, stovetop)" in lines[drain + 1]  # where step 1 left it
-    assert lines[drain + 2].split()[:4] == ["✓", "put(pot,", "colander)", "planner"]
+    assert lines[drain + 2].split()[:4] == ["✓", "pour(pot,", "colander)", "planner"]
     assert lines[drain + 3].split() == ["satisfied", "remaining", "⊤"]
     assert lines[-2].startswith("verdict satisfied") and lines[-1] == "success · 2 of 2 steps reached their effects"
 
@@ -57,7 +57,7 @@ def test_json_gives_per_step_the_actions_with_their_check_and_trace(recipe):
     step = data["steps"][1]
     assert step["text"] == "Drain the pasta." and step["problems"] == []
     (action,) = step["actions"]
-    assert action["action"] == "drain(pasta)" and action["plan"] == ["pick_up(pot)", "put(pot, colander)"]
+    assert action["action"] == "drain(pasta)" and action["plan"] == ["pick_up(pot)", "pour(pot, colander)"]
     assert action["check"]["effect"] == ["in(pasta, colander)"] and action["check"]["planner_lines"] == 1
     assert [line["written_by"] for line in action["trace"]] == ["model", "planner"]
 

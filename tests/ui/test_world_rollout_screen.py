@@ -25,7 +25,7 @@ pytestmark = pytest.mark.anyio
 LINES = [["1.1", "✓", "pick_up(pot) · model"], ["1.2", "✓", "put(pot, stovetop) · model"],
          ["1.3", "✓", "pick_up(pasta) · model"], ["1.4", "✓", "put(pasta, pot) · model"],
          ["1.5", "✓", "turn_on(stovetop) · model"], ["1.6", "✓", "wait(pasta == cooked) · model"],
-         ["2.1", "✓", "pick_up(pot) · model"], ["2.2", "✓", "put(pot, colander) · planner"]]
+         ["2.1", "✓", "pick_up(pot) · model"], ["2.2", "✓", "pour(pot, colander) · planner"]]
 
 
 @pytest.fixture

@@ -56,8 +56,8 @@ class _BatchLane:
         self.steps, self.sequence, self.n_tokens = steps, sequence, n_tokens
         self._scores: np.ndarray | None = None
 
-    def eval(self, tokens: list[int]) -> None:
-        self._scores = self.steps.eval(self, tokens)
+    def evaluate(self, tokens: list[int]) -> None:
+        self._scores = self.steps.evaluate(self, tokens)
         self.n_tokens += len(tokens)
 
     def scores(self) -> np.ndarray:
@@ -114,7 +114,7 @@ class _Steps:
             self._step_if_all_wait()
             self.changed.notify_all()
 
-    def eval(self, lane: _BatchLane, tokens: list[int]) -> np.ndarray:
+    def evaluate(self, lane: _BatchLane, tokens: list[int]) -> np.ndarray:
         with self.changed:
             self.waiting[lane] = tokens
             self._step_if_all_wait()

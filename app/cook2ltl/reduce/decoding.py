@@ -29,9 +29,9 @@ class Lane(Protocol):
     """One sequence of evaluated tokens: a llama.cpp context of its own (`SoloLane`), or one of several sequences
     decoded together in one batch (`cook2ltl.reduce.batched`)."""
 
-    n_tokens: int  # how many tokens are evaluated; lowering it makes the next `eval` go on from there
+    n_tokens: int  # how many tokens are evaluated; lowering it makes the next `evaluate` go on from there
 
-    def eval(self, tokens: list[int]) -> None: ...
+    def evaluate(self, tokens: list[int]) -> None: ...
 
     def scores(self) -> np.ndarray:
         """The next-token logits after the last evaluated token."""
@@ -51,7 +51,7 @@ class SoloLane:
     def n_tokens(self, count: int) -> None:
         self.llama.n_tokens = count
 
-    def eval(self, tokens: list[int]) -> None:
+    def evaluate(self, tokens: list[int]) -> None:
         self.llama.eval(tokens)
 
     def scores(self) -> np.ndarray:
@@ -81,7 +81,7 @@ def greedy_tokens(lane: Lane, vocab, grammar: str, prompt: list[int], max_tokens
         if not tail:  # the whole prompt is already evaluated: replay its last token to get fresh scores
             lane.n_tokens -= 1
             tail = prompt[-1:]
-        lane.eval(tail)
+        lane.evaluate(tail)
         generated: list[int] = []
         while len(generated) < max_tokens:
             token = _best_admitted(sampler, lane.scores())
@@ -94,10 +94,10 @@ def greedy_tokens(lane: Lane, vocab, grammar: str, prompt: list[int], max_tokens
                 return
             rest = forced(generated) if forced is not None else []
             if rest and len(generated) + len(rest) <= max_tokens:
-                lane.eval([token, *rest])
+                lane.evaluate([token, *rest])
                 yield from rest
                 return
-            lane.eval([token])
+            lane.evaluate([token])
     finally:
         llama_cpp.llama_sampler_free(sampler)
 
