@@ -1,25 +1,10 @@
 """State-aware decoding where a way to the effect is known: the lines name only what matters, a plan stops at its
 first detour, and it takes at most a few lines more than the planner's way."""
 
-import pytest
-
-from cook2ltl.domain.actions import Action, Parameter
 from cook2ltl.reduce.grounded import SLACK, reduce_in_world
-from cook2ltl.reduce.primitives import load_primitives
 from cook2ltl.reduce.reduction import ReductionSettings
-from cook2ltl.world.kitchens import grounding
 from tests.reduce.fake_model import ScriptedModel
-
-PRIMITIVES = load_primitives("recipe")
-
-
-@pytest.fixture(scope="module")
-def kitchen():
-    return grounding(PRIMITIVES)
-
-
-def act(verb, **slots):
-    return Action(verb, tuple(Parameter(category, value, value, value) for category, value in slots.items()))
+from tests.world.test_recipe_world import PRIMITIVES, act, kitchen  # noqa: F401 (kitchen: a fixture)
 
 
 def reduce(kitchen, action, answer, effect):

@@ -41,7 +41,10 @@ class SoloLane:
     """A llama_cpp.Llama's own context as a lane."""
 
     def __init__(self, llama) -> None:
+        import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
+
         self.llama = llama
+        self.size = llama_cpp.llama_vocab_n_tokens(llama._model.vocab)  # read once, not at every token
 
     @property
     def n_tokens(self) -> int:
@@ -57,8 +60,7 @@ class SoloLane:
     def scores(self) -> np.ndarray:
         import llama_cpp  # heavy, optional: llama.cpp (the llm extra) loads with the model
 
-        size = llama_cpp.llama_vocab_n_tokens(self.llama._model.vocab)
-        return np.ctypeslib.as_array(llama_cpp.llama_get_logits_ith(self.llama._ctx.ctx, -1), shape=(size,))
+        return np.ctypeslib.as_array(llama_cpp.llama_get_logits_ith(self.llama._ctx.ctx, -1), shape=(self.size,))
 
 
 def greedy_tokens(lane: Lane, vocab, grammar: str, prompt: list[int], max_tokens: int,
